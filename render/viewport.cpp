@@ -1,0 +1,47 @@
+#include "render/viewport.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "render/error.hpp"
+
+namespace render {
+
+void validate_window(const WorldWindow& w) {
+  const double v[4] = {w.x0, w.x1, w.y0, w.y1};
+  const char* names[4] = {"world_x0", "world_x1", "world_y0", "world_y1"};
+  for (int i = 0; i < 4; ++i) {
+    if (!std::isfinite(v[i])) {
+      throw InvalidArgument(std::string(names[i]) + " is not finite");
+    }
+  }
+  if (!(w.x1 > w.x0) || !(w.y1 > w.y0)) {
+    std::ostringstream s;
+    s << "world window [" << w.x0 << ", " << w.x1 << "] x [" << w.y0 << ", " << w.y1
+      << "] is empty or inverted (need x0 < x1 and y0 < y1)";
+    throw InvalidArgument(s.str());
+  }
+}
+
+Rect PixelMap::box() const {
+  const int x0 = int(std::floor(x(window_.x0) + 1e-9));
+  const int x1 = int(std::ceil(x(window_.x1) - 1e-9));
+  const int y0 = int(std::floor(y(window_.y1) + 1e-9));
+  const int y1 = int(std::ceil(y(window_.y0) - 1e-9));
+  return Rect{x0, y0, std::max(x1 - x0, 1), std::max(y1 - y0, 1)};
+}
+
+PixelMap fit_window(const WorldWindow& window, const Rect& area) {
+  validate_window(window);
+  if (area.w <= 0 || area.h <= 0) {
+    throw InvalidArgument("plot area " + std::to_string(area.w) + "x" +
+                          std::to_string(area.h) + " has no room for the world window");
+  }
+  const double scale = std::min(area.w / window.width(), area.h / window.height());
+  const double left = std::floor(area.x + (area.w - window.width() * scale) / 2);
+  const double top = std::floor(area.y + (area.h - window.height() * scale) / 2);
+  return PixelMap(window, left, top, scale);
+}
+
+}  // namespace render

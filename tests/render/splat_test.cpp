@@ -1,0 +1,135 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include "render/error.hpp"
+#include "render/splat.hpp"
+
+namespace render {
+namespace {
+
+struct Cloud {
+  std::vector<double> x, y, hw, hh, v;
+  void add(double px, double py, double w, double h, double val) {
+    x.push_back(px), y.push_back(py), hw.push_back(w), hh.push_back(h), v.push_back(val);
+  }
+  PointsView view() const {
+    return PointsView{x.size(), x.data(), y.data(), hw.data(), hh.data(), v.data()};
+  }
+};
+
+Image paint(const Cloud& c, const WorldWindow& w, int width, int height, const Rect& area,
+            const ColourMap& cmap = ColourMap::viridis()) {
+  OffscreenContext ctx(width, height);
+  const PixelMap map = fit_window(w, area);
+  Splatter s;
+  s.draw(ctx, map, map.box(), c.view(), cmap, 0.0, 1.0);
+  return ctx.read_image();
+}
+
+TEST(Viewport, FitKeepsAspectAndCentres) {
+  const PixelMap m = fit_window(WorldWindow{0, 10, 0, 2}, Rect{0, 0, 200, 100});
+  EXPECT_DOUBLE_EQ(m.scale(), 20.0);
+  EXPECT_DOUBLE_EQ(m.x(0), 0.0);
+  EXPECT_DOUBLE_EQ(m.y(2), 30.0);  // (100 - 40) / 2
+  EXPECT_DOUBLE_EQ(m.y(0), 70.0);
+  EXPECT_EQ(m.box(), (Rect{0, 30, 200, 40}));
+  EXPECT_THROW(fit_window(WorldWindow{1, 1, 0, 1}, Rect{0, 0, 10, 10}), InvalidArgument);
+  EXPECT_THROW(fit_window(WorldWindow{0, NAN, 0, 1}, Rect{0, 0, 10, 10}), InvalidArgument);
+}
+
+TEST(Splat, KnownSquaresPaintExpectedPixels) {
+  Cloud c;
+  c.add(2, 6, 1, 0.5, 0.0);  // -> x [10, 30), rows [15, 25)
+  c.add(7, 2, 0.5, 1, 1.0);  // -> x [65, 75), rows [50, 70)
+  const Image img = paint(c, WorldWindow{0, 10, 0, 8}, 100, 80, Rect{0, 0, 100, 80});
+  const ColourMap cm = ColourMap::viridis();
+  const Rgba lo = cm.at(0.0), hi = cm.at(1.0);
+  EXPECT_EQ(img.at(20, 20), lo);
+  EXPECT_EQ(img.at(10, 15), lo);
+  EXPECT_EQ(img.at(29, 24), lo);
+  EXPECT_EQ(img.at(30, 20), kWhite);
+  EXPECT_EQ(img.at(9, 20), kWhite);
+  EXPECT_EQ(img.at(20, 14), kWhite);
+  EXPECT_EQ(img.at(20, 25), kWhite);
+  EXPECT_EQ(img.at(70, 60), hi);
+  EXPECT_EQ(img.at(65, 50), hi);
+  EXPECT_EQ(img.at(74, 69), hi);
+  EXPECT_EQ(img.at(75, 60), kWhite);
+  EXPECT_EQ(img.at(70, 70), kWhite);
+  EXPECT_EQ(img.at(50, 40), kWhite);
+}
+
+TEST(Splat, RandomSquareEdgesWithinOnePixelOfTheMap) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> pos(1.0, 9.0), half(0.05, 0.6);
+  const WorldWindow w{0, 10, 0, 10};
+  const Rect area{3, 5, 137, 131};  // odd sizes: fractional world->pixel map
+  const PixelMap map = fit_window(w, area);
+  for (int trial = 0; trial < 20; ++trial) {
+    Cloud c;
+    const double x = pos(rng), y = pos(rng), hw = half(rng), hh = half(rng);
+    c.add(x, y, hw, hh, 0.5);
+    const Image img = paint(c, w, 150, 150, area);
+    int x0 = 1 << 30, x1 = -1, y0 = 1 << 30, y1 = -1;
+    for (int py = 0; py < img.height(); ++py) {
+      for (int px = 0; px < img.width(); ++px) {
+        if (img.at(px, py) != kWhite) {
+          x0 = std::min(x0, px), x1 = std::max(x1, px + 1);
+          y0 = std::min(y0, py), y1 = std::max(y1, py + 1);
+        }
+      }
+    }
+    ASSERT_GE(x1, 0) << "square " << trial << " painted nothing";
+    EXPECT_LE(std::abs(x0 - map.x(x - hw)), 1.0) << trial;
+    EXPECT_LE(std::abs(x1 - map.x(x + hw)), 1.0) << trial;
+    EXPECT_LE(std::abs(y0 - map.y(y + hh)), 1.0) << trial;
+    EXPECT_LE(std::abs(y1 - map.y(y - hh)), 1.0) << trial;
+  }
+}
+
+TEST(Splat, SubPixelPointsStillShowAndTileWithoutGaps) {
+  // 0.08 px squares on a 0.1 px grid: every pixel of the block is covered.
+  Cloud c;
+  for (int i = 0; i < 100; ++i) {
+    for (int j = 0; j < 100; ++j) c.add(0.05 + 0.1 * i, 0.05 + 0.1 * j, 0.04, 0.04, 0.0);
+  }
+  const Image img = paint(c, WorldWindow{0, 100, 0, 100}, 100, 100, Rect{0, 0, 100, 100});
+  for (int py = 90; py < 100; ++py) {
+    for (int px = 0; px < 10; ++px) EXPECT_NE(img.at(px, py), kWhite) << px << "," << py;
+  }
+  EXPECT_EQ(img.at(10, 89), kWhite);
+}
+
+TEST(Splat, ClipsToTheWindowAndCullsOutsidePoints) {
+  Cloud c;
+  c.add(-5, 5, 1, 1, 0.0);    // wholly left of the window: culled
+  c.add(0, 5, 1, 1, 0.0);     // straddles the left edge: clipped
+  c.add(5, 5, NAN, 1, 0.0);   // not finite: skipped
+  OffscreenContext ctx(60, 40);
+  const PixelMap map = fit_window(WorldWindow{0, 10, 0, 10}, Rect{10, 0, 40, 40});
+  Splatter s;
+  s.draw(ctx, map, map.box(), c.view(), ColourMap::jet(), 0.0, 1.0);
+  EXPECT_EQ(s.last_drawn(), 1u);
+  const Image img = ctx.read_image();
+  EXPECT_EQ(img.at(9, 20), kWhite);  // left of the box: nothing leaks out
+  EXPECT_EQ(img.at(11, 20), ColourMap::jet().at(0));
+}
+
+TEST(Splat, NullArraysAndBadRangeThrow) {
+  PointsView v;
+  v.count = 3;
+  EXPECT_THROW(validate_points(v), InvalidArgument);
+  Cloud c;
+  c.add(1, 1, 1, 1, 0);
+  OffscreenContext ctx(10, 10);
+  Splatter s;
+  const PixelMap map = fit_window(WorldWindow{0, 2, 0, 2}, Rect{0, 0, 10, 10});
+  EXPECT_THROW(s.draw(ctx, map, map.box(), c.view(), ColourMap::viridis(), 1.0, 1.0),
+               InvalidArgument);
+}
+
+}  // namespace
+}  // namespace render
