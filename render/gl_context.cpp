@@ -1,6 +1,9 @@
 #include "render/gl_context.hpp"
 
 #include <GL/osmesa.h>
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
 
 #include <cstdio>
 #include <cstring>
@@ -98,6 +101,19 @@ std::string OffscreenContext::version() {
   make_current();
   const GLubyte* s = glGetString(GL_VERSION);
   return s ? reinterpret_cast<const char*>(s) : "unknown";
+}
+
+bool keep_freed_heap_memory() {
+#if defined(__GLIBC__)
+  // Setting any threshold turns glibc's adaptive thresholds off, so set
+  // both: keep up to 256 MiB of free heap, and serve blocks below 32 MiB
+  // (whole frames included) from the heap rather than fresh mmaps.
+  const bool trim = mallopt(M_TRIM_THRESHOLD, 256 << 20) == 1;
+  const bool mmap = mallopt(M_MMAP_THRESHOLD, 32 << 20) == 1;
+  return trim && mmap;
+#else
+  return false;
+#endif
 }
 
 }  // namespace render

@@ -46,7 +46,8 @@ class Splatter {
             const PointsView& points, const ColourMap& cmap, double lo, double hi,
             const SplatStyle& style = {});
 
-  // Points actually sent to GL by the last draw (the rest were culled).
+  // Quads sent to GL by the last draw, after culling points outside the
+  // clip and merging same-colour runs.
   std::size_t last_drawn() const { return drawn_; }
 
  private:

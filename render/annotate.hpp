@@ -1,0 +1,36 @@
+#pragma once
+// Axes, ticks, colour bar, title and time stamp around the plotted points.
+// Layout is computed first (the splat needs the world->pixel map), drawing
+// happens after the points are painted.
+#include "render/colour_map.hpp"
+#include "render/font.hpp"
+#include "render/frame_spec.hpp"
+#include "render/ticks.hpp"
+#include "render/viewport.hpp"
+
+namespace render {
+
+struct FrameLayout {
+  int width = 0, height = 0;
+  Rect plot_area;     // room left for the world window after the margins
+  PixelMap map;       // world -> pixel, equal scale, centred in plot_area
+  Rect box;           // the world window in pixels (axes frame goes round it)
+  Rect colour_bar;    // empty when the spec hides the bar
+  Ticks x_ticks, y_ticks, bar_ticks;
+  int tick_px = 15, label_px = 17, title_px = 22;  // font pixel sizes
+  int tick_len = 6, gap = 6, margin = 14;
+};
+
+// Sizes scale with the image (1280x720 is the reference). Throws
+// InvalidArgument if the image is too small to hold the annotations.
+FrameLayout layout_frame(Font& font, const FrameSpec& spec);
+
+void draw_annotations(Image& img, Font& font, const FrameLayout& layout,
+                      const FrameSpec& spec, const ColourMap& cmap);
+
+// "t = 12.50 s"
+std::string format_time(double seconds);
+// "displacement [m]", or just the label when the unit is empty.
+std::string bar_label(const FrameSpec& spec);
+
+}  // namespace render
