@@ -25,10 +25,13 @@ void validate_window(const WorldWindow& w) {
 }
 
 Rect PixelMap::box() const {
-  const int x0 = int(std::floor(x(window_.x0) + 1e-9));
-  const int x1 = int(std::ceil(x(window_.x1) - 1e-9));
-  const int y0 = int(std::floor(y(window_.y1) + 1e-9));
-  const int y1 = int(std::ceil(y(window_.y0) - 1e-9));
+  // Nearest pixel edges, the same rounding the splat uses for square edges,
+  // so points touching the window's edge fill it to the frame (rounding
+  // outward left an empty sliver row or column inside the frame).
+  const int x0 = int(std::lround(x(window_.x0)));
+  const int x1 = int(std::lround(x(window_.x1)));
+  const int y0 = int(std::lround(y(window_.y1)));
+  const int y1 = int(std::lround(y(window_.y0)));
   return Rect{x0, y0, std::max(x1 - x0, 1), std::max(y1 - y0, 1)};
 }
 

@@ -26,7 +26,7 @@ class PixelMap {
   double y(double wy) const { return top_ + (window_.y1 - wy) * scale_; }
   double scale() const { return scale_; }
   const WorldWindow& window() const { return window_; }
-  // The window's outline in pixels (rounded outward to whole pixels).
+  // The window's outline in pixels, edges rounded to the nearest pixel.
   Rect box() const;
 
  private:
