@@ -1,0 +1,160 @@
+#include "render/video.hpp"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <vector>
+
+#include "render/error.hpp"
+#include "render/png_io.hpp"
+#include "render/subprocess.hpp"
+
+namespace render {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string frame_name(int i) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%06d.png", i);
+  return buf;
+}
+
+// ffmpeg's image2 demuxer reads '%' in the path as a format directive.
+std::string escape_percent(const std::string& s) {
+  std::string out;
+  for (char c : s) {
+    out += c;
+    if (c == '%') out += '%';
+  }
+  return out;
+}
+
+std::string tail_lines(const std::string& s, std::size_t max_chars = 1500) {
+  std::string t = s.size() > max_chars ? s.substr(s.size() - max_chars) : s;
+  while (!t.empty() && (t.back() == '\n' || t.back() == '\r')) t.pop_back();
+  return t.empty() ? "(no output)" : t;
+}
+
+// Runs ffmpeg writing to a temporary next to `final_path`, renames on
+// success, removes the temporary on any failure.
+void run_to(const VideoOptions& opt, std::vector<std::string> args,
+            const std::string& final_path) {
+  const std::string tmp = final_path + ".part-" + std::to_string(getpid());
+  args.push_back(tmp);
+  // -xerror: a frame that fails to decode is an error, not a silently
+  // dropped frame.
+  args.insert(args.begin(),
+              {opt.ffmpeg, "-nostdin", "-hide_banner", "-loglevel", "error", "-xerror", "-y"});
+  const ProcessResult r = run_process(args);
+  std::error_code ec;
+  if (!r.ok()) {
+    fs::remove(tmp, ec);
+    if (!r.started) {
+      throw VideoError(r.spawn_error + " (needed to write " + final_path +
+                       "; install the ffmpeg package)");
+    }
+    throw VideoError("ffmpeg failed (" + r.status_text() + ") writing " + final_path + ":\n" +
+                     tail_lines(r.output));
+  }
+  if (!fs::exists(tmp, ec) || fs::file_size(tmp, ec) == 0) {
+    fs::remove(tmp, ec);
+    throw VideoError("ffmpeg reported success but wrote nothing for " + final_path);
+  }
+  fs::rename(tmp, final_path, ec);
+  if (ec) {
+    fs::remove(tmp, ec);
+    throw VideoError("cannot rename " + tmp + " to " + final_path + ": " + ec.message());
+  }
+}
+
+}  // namespace
+
+int count_frames(const std::string& frames_dir) {
+  int n = 0;
+  std::error_code ec;
+  while (fs::is_regular_file(fs::path(frames_dir) / frame_name(n), ec)) ++n;
+  return n;
+}
+
+bool ffmpeg_available(std::string* why, const std::string& ffmpeg) {
+  auto fail = [why](const std::string& msg) {
+    if (why) *why = msg;
+    return false;
+  };
+  const ProcessResult enc = run_process({ffmpeg, "-hide_banner", "-encoders"}, 1 << 20);
+  if (!enc.started) return fail(enc.spawn_error + " (install the ffmpeg package)");
+  if (!enc.ok()) {
+    return fail("'" + ffmpeg + " -encoders' failed (" + enc.status_text() + "): " +
+                tail_lines(enc.output, 300));
+  }
+  if (enc.output.find(" libx264 ") == std::string::npos) {
+    return fail("'" + ffmpeg + "' has no libx264 encoder (needed for browser-playable mp4)");
+  }
+  if (enc.output.find(" gif ") == std::string::npos) {
+    return fail("'" + ffmpeg + "' has no gif encoder");
+  }
+  const ProcessResult fil = run_process({ffmpeg, "-hide_banner", "-filters"}, 1 << 20);
+  if (!fil.ok() || fil.output.find(" palettegen ") == std::string::npos) {
+    return fail("'" + ffmpeg + "' has no palettegen filter (needed for the gif)");
+  }
+  if (why) why->clear();
+  return true;
+}
+
+VideoFiles encode_video(const std::string& frames_dir, const std::string& out_dir,
+                        const std::string& name, const VideoOptions& opt) {
+  if (name.empty() || name.find('/') != std::string::npos || name[0] == '.') {
+    throw InvalidArgument("video name '" + name +
+                          "' must be a plain file name (no '/', not starting with '.')");
+  }
+  if (opt.fps < 1 || opt.fps > 240 || opt.gif_fps < 1 || opt.gif_width < 16 ||
+      opt.crf < 0 || opt.crf > 51) {
+    throw InvalidArgument("video options out of range (fps 1..240, gif_fps >= 1, "
+                          "gif_width >= 16, crf 0..51)");
+  }
+  // Absolute paths: a directory named "-x" can never pass for an option.
+  const fs::path dir = fs::absolute(frames_dir);
+  const fs::path first = dir / frame_name(0);
+  std::error_code ec;
+  if (!fs::is_regular_file(first, ec)) {
+    throw VideoError("no frames to encode: " + first.string() + " does not exist");
+  }
+  const fs::path out = fs::absolute(out_dir);
+  if (!fs::is_directory(out, ec)) {
+    throw VideoError("output directory " + out.string() + " does not exist");
+  }
+  const Image frame0 = read_png(first.string());  // size for the GIF; fails early if corrupt
+  const std::string pattern = escape_percent(dir.string()) + "/%06d.png";
+  const std::vector<std::string> input = {"-framerate", std::to_string(opt.fps),
+                                          "-start_number", "0", "-i", pattern};
+
+  VideoFiles files;
+  files.mp4 = (out / (name + ".mp4")).string();
+  std::vector<std::string> mp4 = input;
+  // x264 with yuv420p needs even sizes: pad (not scale) to keep pixels sharp.
+  mp4.insert(mp4.end(), {"-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2:color=white",
+                         "-c:v", "libx264", "-preset", "medium", "-crf",
+                         std::to_string(opt.crf), "-pix_fmt", "yuv420p", "-movflags",
+                         "+faststart", "-f", "mp4"});
+  run_to(opt, mp4, files.mp4);
+
+  if (opt.gif) {
+    files.gif = (out / (name + ".gif")).string();
+    const int width = std::min(opt.gif_width, frame0.width());
+    const int fps = std::min(opt.gif_fps, opt.fps);
+    // One palette for the whole clip (palettegen), then dithered mapping.
+    const std::string graph = "fps=" + std::to_string(fps) + ",scale=" +
+                              std::to_string(width) +
+                              ":-1:flags=lanczos,split[a][b];[a]palettegen[p];[b][p]paletteuse";
+    std::vector<std::string> gif = input;
+    gif.insert(gif.end(), {"-vf", graph, "-loop", "0", "-f", "gif"});
+    run_to(opt, gif, files.gif);
+  }
+  return files;
+}
+
+}  // namespace render

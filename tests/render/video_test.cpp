@@ -1,0 +1,123 @@
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "render/error.hpp"
+#include "render/png_io.hpp"
+#include "render/subprocess.hpp"
+#include "render/video.hpp"
+#include "test_support.hpp"
+
+namespace render {
+namespace {
+
+namespace fs = std::filesystem;
+
+void write_frames(const std::string& dir, int n, int w, int h) {
+  for (int i = 0; i < n; ++i) {
+    Image img(w, h, kWhite);
+    img.fill_rect(Rect{i * 8, h / 4, 12, h / 2}, Rgba{200, 40, 40, 255});
+    char name[32];
+    std::snprintf(name, sizeof name, "/%06d.png", i);
+    write_png(img, dir + name);
+  }
+}
+
+bool no_partial_files(const std::string& dir) {
+  for (const auto& e : fs::directory_iterator(dir)) {
+    if (e.path().string().find(".part") != std::string::npos) return false;
+  }
+  return true;
+}
+
+TEST(Subprocess, RunsWithoutAShellAndReportsStatus) {
+  const ProcessResult ok = run_process({"sh", "-c", "echo out; echo err >&2; exit 3"});
+  ASSERT_TRUE(ok.started);
+  EXPECT_EQ(ok.exit_code, 3);
+  EXPECT_NE(ok.output.find("out"), std::string::npos);
+  EXPECT_NE(ok.output.find("err"), std::string::npos);
+  // An argument with shell syntax reaches the program verbatim.
+  const ProcessResult echo = run_process({"echo", "$(rm -rf /); `x` 'q'"});
+  EXPECT_EQ(echo.output, "$(rm -rf /); `x` 'q'\n");
+  const ProcessResult missing = run_process({"/no/such/program"});
+  EXPECT_FALSE(missing.started);
+  EXPECT_NE(missing.spawn_error.find("/no/such/program"), std::string::npos);
+  const ProcessResult tail = run_process({"seq", "1", "100000"}, 64);
+  EXPECT_EQ(tail.output.size(), 64u);
+  EXPECT_NE(tail.output.find("100000\n"), std::string::npos);
+}
+
+TEST(Video, MissingFfmpegIsReportedWithAReason) {
+  std::string why;
+  EXPECT_FALSE(ffmpeg_available(&why, "/no/such/ffmpeg"));
+  EXPECT_NE(why.find("/no/such/ffmpeg"), std::string::npos) << why;
+}
+
+TEST(Video, EncodesMp4AndGifFromNumberedFrames) {
+  std::string why;
+  if (!ffmpeg_available(&why)) GTEST_SKIP() << "ffmpeg unusable: " << why;
+  render_test::TempDir dir;
+  const std::string frames = dir.file("frames");
+  fs::create_directory(frames);
+  write_frames(frames, 4, 65, 49);  // odd size: the mp4 must pad to even
+  EXPECT_EQ(count_frames(frames), 4);
+
+  VideoOptions opt;
+  opt.fps = 10;
+  const VideoFiles out = encode_video(frames, dir.path(), "clip", opt);
+  EXPECT_EQ(out.mp4, dir.file("clip.mp4"));
+  EXPECT_EQ(out.gif, dir.file("clip.gif"));
+  ASSERT_TRUE(fs::exists(out.mp4));
+  ASSERT_TRUE(fs::exists(out.gif));
+  EXPECT_GT(fs::file_size(out.mp4), 0u);
+  EXPECT_GT(fs::file_size(out.gif), 0u);
+  EXPECT_TRUE(no_partial_files(dir.path()));
+
+  std::ifstream gif(out.gif, std::ios::binary);
+  char magic[6] = {0};
+  gif.read(magic, 6);
+  EXPECT_EQ(std::string(magic, 6), "GIF89a");
+
+  const ProcessResult probe =
+      run_process({"ffprobe", "-v", "error", "-select_streams", "v:0", "-show_entries",
+                   "stream=codec_name,pix_fmt,width,height", "-of", "default=nw=1", out.mp4});
+  if (probe.ok()) {
+    EXPECT_NE(probe.output.find("codec_name=h264"), std::string::npos) << probe.output;
+    EXPECT_NE(probe.output.find("pix_fmt=yuv420p"), std::string::npos) << probe.output;
+    EXPECT_NE(probe.output.find("width=66"), std::string::npos) << probe.output;
+    EXPECT_NE(probe.output.find("height=50"), std::string::npos) << probe.output;
+  }
+}
+
+TEST(Video, FailuresThrowAndLeaveNoOutput) {
+  render_test::TempDir dir;
+  try {
+    encode_video(dir.path(), dir.path(), "clip");
+    FAIL() << "expected VideoError";
+  } catch (const VideoError& e) {
+    EXPECT_NE(std::string(e.what()).find("000000.png"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(encode_video(dir.path(), dir.path(), "../escape"), InvalidArgument);
+
+  write_frames(dir.path(), 2, 32, 32);
+  VideoOptions bogus;
+  bogus.ffmpeg = "/no/such/ffmpeg";
+  EXPECT_THROW(encode_video(dir.path(), dir.path(), "clip", bogus), VideoError);
+
+  std::string why;
+  if (!ffmpeg_available(&why)) GTEST_SKIP() << "ffmpeg unusable: " << why;
+  // A corrupt second frame makes ffmpeg itself fail: its message comes back.
+  std::ofstream(dir.file("000001.png")) << "not a png";
+  try {
+    encode_video(dir.path(), dir.path(), "clip");
+    FAIL() << "expected VideoError";
+  } catch (const VideoError& e) {
+    EXPECT_NE(std::string(e.what()).find("ffmpeg failed"), std::string::npos) << e.what();
+  }
+  EXPECT_FALSE(fs::exists(dir.file("clip.mp4")));
+  EXPECT_TRUE(no_partial_files(dir.path()));
+}
+
+}  // namespace
+}  // namespace render
