@@ -196,12 +196,16 @@ void draw_heading(Image& img, Font& font, const FrameLayout& L, const FrameSpec&
     time_left = t.x;
   }
   if (spec.title.empty()) return;
-  const int w = font.text_width(spec.title, L.title_px);
+  // A title too long for the line is set smaller rather than clipped.
+  const int room = time_left - 2 * L.gap - L.margin;
+  int size = L.title_px;
+  int w = font.text_width(spec.title, size);
+  while (w > room && size > 8) w = font.text_width(spec.title, --size);
   // Centred over the plot; pushed left if it would run into the time stamp.
   int left = L.box.x + L.box.w / 2 - w / 2;
   left = std::min(left, time_left - 2 * L.gap - w);
   left = std::max(left, L.margin);
-  font.draw(img, spec.title, L.title_px, left, baseline, HAlign::Left, VAlign::Baseline, kInk);
+  font.draw(img, spec.title, size, left, baseline, HAlign::Left, VAlign::Baseline, kInk);
 }
 
 }  // namespace

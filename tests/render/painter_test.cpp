@@ -100,6 +100,11 @@ TEST(Painter, NothingClippedForTallWindowsLongLabelsAndSmallFrames) {
   const Cloud c = block(-1000, -991, -1499, -1470, 0.5);
   expect_clean_border(painter.paint(tall, c.view()), kWhite, 3);
 
+  FrameSpec wordy = slope_spec();
+  wordy.title = std::string(12, ' ') + "An extremely long title that could never fit on one line at "
+                "the normal title size, so it has to be set smaller instead";
+  expect_clean_border(painter.paint(wordy, c.view()), kWhite, 3);
+
   FrameSpec small = slope_spec();
   small.width = 640, small.height = 360;
   const Image img = painter.paint(small, c.view());

@@ -62,6 +62,26 @@ TEST(Splat, KnownSquaresPaintExpectedPixels) {
   EXPECT_EQ(img.at(50, 40), kWhite);
 }
 
+TEST(Splat, PixelExactEdgesInAFullSizeFrame) {
+  // 1 m per pixel over a 1280x720 frame: large coordinates stay exact.
+  Cloud c;
+  c.add(1000, 100, 200, 50, 1.0);  // -> x [800, 1200), rows [570, 670)
+  const Image img = paint(c, WorldWindow{0, 1280, 0, 720}, 1280, 720, Rect{0, 0, 1280, 720});
+  const Rgba hi = ColourMap::viridis().at(1.0);
+  for (int y = 560; y < 680; ++y) {
+    for (int x : {799, 800, 1199, 1200}) {
+      const bool inside = x >= 800 && x < 1200 && y >= 570 && y < 670;
+      ASSERT_EQ(img.at(x, y), inside ? hi : kWhite) << x << "," << y;
+    }
+  }
+  for (int x = 790; x < 1210; ++x) {
+    EXPECT_EQ(img.at(x, 569), kWhite);
+    EXPECT_EQ(img.at(x, 570), x >= 800 && x < 1200 ? hi : kWhite);
+    EXPECT_EQ(img.at(x, 669), x >= 800 && x < 1200 ? hi : kWhite);
+    EXPECT_EQ(img.at(x, 670), kWhite);
+  }
+}
+
 TEST(Splat, RandomSquareEdgesWithinOnePixelOfTheMap) {
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> pos(1.0, 9.0), half(0.05, 0.6);
