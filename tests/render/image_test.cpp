@@ -1,3 +1,4 @@
+#include <GL/osmesa.h>
 #include <gtest/gtest.h>
 
 #include "render/error.hpp"
@@ -51,9 +52,21 @@ TEST(OffscreenContext, ClearsAndFlipsRowsToTopFirst) {
   OffscreenContext ctx(8, 6);
   EXPECT_FALSE(ctx.renderer().empty());
   ctx.make_current();
-  Image img = ctx.read_image();
-  EXPECT_EQ(img.width(), 8);
-  EXPECT_EQ(img.height(), 6);
+  glClearColor(1, 1, 1, 1);
+  glClear(GL_COLOR_BUFFER_BIT);
+  // GL counts rows from the bottom: its top two rows are 4 and 5.
+  glEnable(GL_SCISSOR_TEST);
+  glScissor(0, 4, 8, 2);
+  glClearColor(1, 0, 0, 1);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glDisable(GL_SCISSOR_TEST);
+  const Image img = ctx.read_image();
+  ASSERT_EQ(img.width(), 8);
+  ASSERT_EQ(img.height(), 6);
+  EXPECT_EQ(img.at(3, 0), (Rgba{255, 0, 0, 255}));
+  EXPECT_EQ(img.at(3, 1), (Rgba{255, 0, 0, 255}));
+  EXPECT_EQ(img.at(3, 2), kWhite);
+  EXPECT_EQ(img.at(3, 5), kWhite);
 }
 
 TEST(OffscreenContext, SeveralContextsCoexist) {
