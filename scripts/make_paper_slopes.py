@@ -1,0 +1,76 @@
+#!/usr/bin/env python3
+"""Writes the paper's slope scenarios (scenarios/paper-slope-*.json).
+
+Geometry and soil follow the reconstruction in ../shared/design/method-notes.md
+section 3: a 10 m high slope at 40 degrees, crest from x = 0 to 43.95 m, toe at
+55.87 m, a 6 m x 4 m elastic house 2 m behind the crest edge, 60 m of runout
+floor right of the toe. Rerun after changing anything here; the JSON files are
+what the program reads.
+"""
+import json
+import math
+import pathlib
+
+H = 10.0
+CREST = 43.95
+TOE = CREST + H / math.tan(math.radians(40.0))  # 55.87 m
+RIGHT = 116.0   # >= 60 m right of the toe
+TOP = 20.0
+
+# Cell size per point count (method notes section 3).
+RESOLUTIONS = {1648: 1.127, 8370: 0.5, 28724: 0.270, 67016: 0.177}
+
+
+def scenario(phi, points, name):
+    h = RESOLUTIONS[points]
+    return {
+        "name": name,
+        "description": (
+            f"The paper's 40 degree slope with a house (Andersen & Andersen), friction {phi} deg "
+            f"after the trigger, about {points} points (h = {h} m). Gravity is ramped in with "
+            "cohesion 40 kPa; the trigger removes the cohesion; the slide runs until at rest."),
+        "domain": {"min": [0, 0], "max": [RIGHT, TOP]},
+        "grid": {"cell_size": h, "padding_cells": 2, "points_per_cell": 2},
+        "gravity": [0, -9.81],
+        "boundaries": {"left": "roller", "right": "roller", "bottom": "fixed", "top": "free"},
+        "materials": {
+            "soil": {"model": "mohr-coulomb", "density": 2000, "youngs_modulus": 20e6,
+                     "poisson_ratio": 0.25, "cohesion": 40e3, "friction_angle": phi,
+                     "dilation_angle": min(10, phi)},
+            "house": {"model": "linear-elastic", "density": 500, "youngs_modulus": 20e6,
+                      "poisson_ratio": 0.25},
+        },
+        "bodies": [
+            {"name": "slope", "material": "soil",
+             "polygon": [[0, 0], [round(TOE, 2), 0], [CREST, H], [0, H]]},
+            {"name": "house", "material": "house",
+             "rectangle": {"min": [CREST - 8.0, H], "max": [CREST - 2.0, H + 4.0]}},
+        ],
+        "time_step": {"courant": 0.5},
+        "stages": [
+            {"name": "gravity", "type": "gravity", "duration": 5.0, "ramp_fraction": 0.5,
+             "damping": 0.01},
+            {"name": "trigger", "type": "material-change", "material": "soil",
+             "set": {"cohesion": 0}},
+            {"name": "slide", "type": "dynamic", "duration": 40.0,
+             "stop_at_rest": {"kinetic_ratio": 1e-4, "min_time": 2.0}},
+        ],
+        "output": {"frame_interval": 0.5, "frame_stages": ["slide"],
+                   "fields": ["displacement-x", "relative-yield"], "colour_map": "jet",
+                   "displacement_reference": "initial", "vtk": "stage-end",
+                   "image_size": [1280, 720]},
+    }
+
+
+def main():
+    out = pathlib.Path(__file__).resolve().parent.parent / "scenarios"
+    files = {f"paper-slope-phi{phi}": (phi, 8370) for phi in (25, 20, 15, 10)}
+    files.update({f"paper-slope-phi20-n{n}": (20, n) for n in (1648, 28724, 67016)})
+    for name, (phi, points) in files.items():
+        text = json.dumps(scenario(phi, points, name), indent=2) + "\n"
+        (out / f"{name}.json").write_text(text)
+        print(out / f"{name}.json")
+
+
+if __name__ == "__main__":
+    main()

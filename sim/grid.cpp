@@ -1,0 +1,71 @@
+#include "sim/grid.hpp"
+
+#include <cmath>
+
+namespace sim {
+
+namespace {
+
+// Whether a wall of this kind holds the velocity component normal to it (n)
+// and the one along it (t).
+void wall_holds(BoundaryKind kind, bool& normal, bool& tangential) {
+  normal = kind != BoundaryKind::Free;
+  tangential = kind == BoundaryKind::Fixed;
+}
+
+// Cells needed to cover a length; a length that is a whole number of cells up
+// to round-off does not get an extra cell.
+int cells_covering(double length, double h) {
+  return static_cast<int>(std::ceil(length / h - 1e-9));
+}
+
+}  // namespace
+
+Grid make_grid(const Scenario& s) {
+  Grid g;
+  g.h = s.cell_size;
+  const int pad = s.padding_cells;
+  const int cells_x = cells_covering(s.domain_max[0] - s.domain_min[0], g.h);
+  const int cells_y = cells_covering(s.domain_max[1] - s.domain_min[1], g.h);
+  g.origin_x = s.domain_min[0] - pad * g.h;
+  g.origin_y = s.domain_min[1] - pad * g.h;
+  g.nx = cells_x + 2 * pad + 1;
+  g.ny = cells_y + 2 * pad + 1;
+  const std::size_t n = static_cast<std::size_t>(g.nx) * g.ny;
+  for (auto* v : {&g.mass, &g.px, &g.py, &g.vx, &g.vy, &g.fx, &g.fy, &g.ax, &g.ay}) v->assign(n, 0.0);
+  g.fix_x.assign(n, 0);
+  g.fix_y.assign(n, 0);
+
+  // Walls act on the nodes on their line and on every padding node beyond it,
+  // so material that reaches a wall cannot pass through it.
+  const int left = pad, right = pad + cells_x, bottom = pad, top = pad + cells_y;
+  bool normal = false, tangential = false;
+  for (int j = 0; j < g.ny; ++j) {
+    for (int i = 0; i < g.nx; ++i) {
+      const int k = g.node(i, j);
+      if (i <= left) {
+        wall_holds(s.boundaries.left, normal, tangential);
+        g.fix_x[k] |= normal;
+        g.fix_y[k] |= tangential;
+      }
+      if (i >= right) {
+        wall_holds(s.boundaries.right, normal, tangential);
+        g.fix_x[k] |= normal;
+        g.fix_y[k] |= tangential;
+      }
+      if (j <= bottom) {
+        wall_holds(s.boundaries.bottom, normal, tangential);
+        g.fix_y[k] |= normal;
+        g.fix_x[k] |= tangential;
+      }
+      if (j >= top) {
+        wall_holds(s.boundaries.top, normal, tangential);
+        g.fix_y[k] |= normal;
+        g.fix_x[k] |= tangential;
+      }
+    }
+  }
+  return g;
+}
+
+}  // namespace sim

@@ -1,0 +1,37 @@
+// The background grid of the GIMP step (paper Section 5): nodal mass, momentum
+// and force on a regular mesh of cell size h. The mesh extends `padding`
+// empty cells beyond every wall so that a particle's GIMP domain never
+// reaches outside it (paper Section 6).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "sim/scenario.hpp"
+
+namespace sim {
+
+struct Grid {
+  double origin_x = 0, origin_y = 0;  // position of node (0, 0)
+  double h = 0;                       // cell size
+  int nx = 0, ny = 0;                 // nodes per axis
+
+  // Per node, indexed j * nx + i: mass and momentum (Eqs. 26, 27), velocity
+  // p/m, force (Eqs. 16, 17) and acceleration f/m.
+  std::vector<double> mass, px, py, vx, vy, fx, fy, ax, ay;
+  // Velocity components held at zero by the walls (1 = fixed).
+  std::vector<std::uint8_t> fix_x, fix_y;
+
+  // Nodes that particles touched this step: [i_begin, i_end) x [j_begin, j_end).
+  // Every nodal loop runs over this window only, so empty air costs nothing.
+  int i_begin = 0, i_end = 0, j_begin = 0, j_end = 0;
+
+  int node(int i, int j) const { return j * nx + i; }
+};
+
+// Builds the grid for a scenario: walls on the domain lines (the right and top
+// walls on the first grid line at or beyond domain.max), boundary flags per
+// node from the scenario's boundary kinds.
+Grid make_grid(const Scenario& scenario);
+
+}  // namespace sim

@@ -1,0 +1,102 @@
+// The two per-point phases of the step: the stress update (grid -> point
+// strain increment, then the constitutive model) and the velocity and
+// position update (grid -> point, Eqs. 29 and 30).
+#include <algorithm>
+#include <cmath>
+
+#include "sim/constitutive.hpp"
+#include "sim/step.hpp"
+
+namespace sim {
+
+void update_stress(World& w, double dt) {
+  Particles& pts = w.points;
+  const Grid& g = w.grid;
+  const int n = static_cast<int>(pts.size());
+#pragma omp parallel for schedule(static)
+  for (int p = 0; p < n; ++p) {
+    const Stencil& st = w.stencils[p];
+    // Velocity gradient L_ab = sum_i v_ia dS_ip/dx_b.
+    double lxx = 0, lxy = 0, lyx = 0, lyy = 0;
+    for (int b = 0; b < 3; ++b) {
+      const int row = g.node(st.base_i, st.base_j + b);
+      for (int a = 0; a < 3; ++a) {
+        const double gx = st.dx[a] * st.wy[b], gy = st.wx[a] * st.dy[b];
+        lxx += g.vx[row + a] * gx;
+        lxy += g.vx[row + a] * gy;
+        lyx += g.vy[row + a] * gx;
+        lyy += g.vy[row + a] * gy;
+      }
+    }
+    const StrainIncrement de{dt * lxx, dt * lyy, 0.5 * dt * (lxy + lyx)};  // Eq. (31)
+    const MaterialConstants& mat = w.materials[pts.material[p]];
+    Stress s{pts.sxx[p], pts.syy[p], pts.sxy[p], pts.szz[p]};
+    jaumann_rotate(s, 0.5 * dt * (lxy - lyx));  // Eq. (24)
+    elastic_predictor(s, de, mat);              // Eq. (21)
+    if (mat.plastic)                            // Eqs. (20)-(23)
+      pts.yielded[p] = mohr_coulomb_return(mat.mohr_coulomb, s) != ReturnRegion::Elastic;
+    pts.sxx[p] = s.xx;
+    pts.syy[p] = s.yy;
+    pts.sxy[p] = s.xy;
+    pts.szz[p] = s.zz;
+    pts.density[p] *= std::exp(-(de.xx + de.yy));  // Eq. (25)
+  }
+}
+
+void grid_to_points(World& w, const StepInput& in, StepReport& report) {
+  Particles& pts = w.points;
+  const Grid& g = w.grid;
+  const int n = static_cast<int>(pts.size());
+  const int chunks = (n + kReductionChunk - 1) / kReductionChunk;
+  w.chunk_sums.assign(3 * static_cast<std::size_t>(chunks), 0.0);
+  const double keep = 1.0 / (1.0 + in.damping);  // v := v / (1 + theta)
+#pragma omp parallel for schedule(static)
+  for (int c = 0; c < chunks; ++c) {
+    double work = 0, kinetic = 0, signal = 0;
+    const int end = std::min(n, (c + 1) * kReductionChunk);
+    for (int p = c * kReductionChunk; p < end; ++p) {
+      const Stencil& st = w.stencils[p];
+      double ax = 0, ay = 0, vx = 0, vy = 0;
+      for (int b = 0; b < 3; ++b) {
+        const int row = g.node(st.base_i, st.base_j + b);
+        for (int a = 0; a < 3; ++a) {
+          const double S = st.wx[a] * st.wy[b];
+          ax += S * g.ax[row + a];
+          ay += S * g.ay[row + a];
+          vx += S * g.vx[row + a];
+          vy += S * g.vy[row + a];
+        }
+      }
+      const double dx = in.dt * vx, dy = in.dt * vy;  // Eq. (29)
+      pts.x[p] += dx;
+      pts.y[p] += dy;
+      pts.vx[p] = (pts.vx[p] + in.dt * ax) * keep;  // Eq. (30), then damping
+      pts.vy[p] = (pts.vy[p] + in.dt * ay) * keep;
+      const double m = pts.mass[p];
+      const double v2 = pts.vx[p] * pts.vx[p] + pts.vy[p] * pts.vy[p];
+      work += m * (in.gravity[0] * dx + in.gravity[1] * dy);
+      kinetic += 0.5 * m * v2;
+      signal = std::max(signal, w.materials[pts.material[p]].wave_speed + std::sqrt(v2));
+    }
+    w.chunk_sums[3 * c] = work;
+    w.chunk_sums[3 * c + 1] = kinetic;
+    w.chunk_sums[3 * c + 2] = signal;
+  }
+  report = StepReport{};
+  for (int c = 0; c < chunks; ++c) {
+    report.gravity_work += w.chunk_sums[3 * c];
+    report.kinetic_energy += w.chunk_sums[3 * c + 1];
+    report.max_signal = std::max(report.max_signal, w.chunk_sums[3 * c + 2]);
+  }
+}
+
+double max_signal_speed(const World& w) {
+  const Particles& pts = w.points;
+  double signal = 0;
+  for (std::size_t p = 0; p < pts.size(); ++p)
+    signal = std::max(signal, w.materials[pts.material[p]].wave_speed +
+                                  std::hypot(pts.vx[p], pts.vy[p]));
+  return signal;
+}
+
+}  // namespace sim

@@ -1,0 +1,208 @@
+// Reading a scenario: every key is checked against what is allowed before the
+// simulation is built (scenarios/README.md documents the format).
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <regex>
+#include <sstream>
+
+#include "sim/scenario_geometry.hpp"
+#include "sim/scenario_json.hpp"
+#include "sim/scenario_parts.hpp"
+
+namespace sim {
+
+using namespace scenario_json;
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+MaterialSpec parse_material(const Node& node, const std::string& name) {
+  const std::string model = one_of(required(node, "model"), {"linear-elastic", "mohr-coulomb"});
+  MaterialSpec m;
+  m.name = name;
+  m.model = model == "mohr-coulomb" ? MaterialModel::MohrCoulomb : MaterialModel::LinearElastic;
+  if (m.model == MaterialModel::MohrCoulomb)
+    require_object(node, {"model", "density", "youngs_modulus", "poisson_ratio", "cohesion",
+                          "friction_angle", "dilation_angle"});
+  else
+    require_object(node, {"model", "density", "youngs_modulus", "poisson_ratio"});
+  const std::string need = "required for a " + model + " material";
+  m.density = positive(required(node, "density", need));
+  m.youngs_modulus = positive(required(node, "youngs_modulus", need));
+  m.poisson_ratio = number(required(node, "poisson_ratio", need), 0, Bound::Closed, 0.5, Bound::Open);
+  if (m.model == MaterialModel::MohrCoulomb) {
+    m.cohesion = non_negative(required(node, "cohesion", need));
+    m.friction_angle =
+        number(required(node, "friction_angle", need), 0, Bound::Open, 90, Bound::Open) * kPi / 180;
+    const Node dilation = required(node, "dilation_angle", need);
+    m.dilation_angle = number(dilation, 0, Bound::Closed, m.friction_angle * 180 / kPi,
+                              Bound::Closed) * kPi / 180;
+  }
+  return m;
+}
+
+std::vector<MaterialSpec> parse_materials(const Node& node) {
+  if (!node.value.is_object() || node.value.empty())
+    fail(node, "an object of named materials (at least one)");
+  if (node.value.size() > 255) fail(node, "at most 255 materials");
+  std::vector<MaterialSpec> materials;
+  for (const auto& item : node.value.items())
+    materials.push_back(parse_material(node.at(item.key()), item.key()));
+  return materials;
+}
+
+std::vector<Vec2> parse_polygon(const Node& node) {
+  if (!node.value.is_array() || node.value.size() < 3 || node.value.size() > 100000)
+    fail(node, "an array of at least 3 vertices [x, y]");
+  std::vector<Vec2> polygon;
+  for (std::size_t i = 0; i < node.value.size(); ++i) polygon.push_back(vec2(node.at(i)));
+  if (!polygon_is_simple(polygon)) fail(node, "a simple polygon (its edges cross or touch)");
+  const double area = signed_area(polygon);
+  if (area == 0) fail(node, "a polygon of non-zero area");
+  if (area < 0) std::reverse(polygon.begin(), polygon.end());
+  return polygon;
+}
+
+BodySpec parse_body(const Node& node, const std::vector<MaterialSpec>& materials) {
+  require_object(node, {"name", "material", "rectangle", "polygon"});
+  BodySpec b;
+  b.name = string(required(node, "name"));
+  if (b.name.empty()) fail(node.at("name"), "a non-empty name");
+  const Node material = required(node, "material");
+  const std::string name = string(material);
+  for (std::size_t i = 0; i < materials.size(); ++i)
+    if (materials[i].name == name) b.material = static_cast<int>(i);
+  if (b.material < 0) fail(material, "the name of a material in materials");
+  if (node.has("rectangle") == node.has("polygon"))
+    fail(node, "exactly one of \"rectangle\" or \"polygon\"");
+  if (node.has("polygon")) {
+    b.polygon = parse_polygon(node.at("polygon"));
+  } else {
+    const Node r = node.at("rectangle");
+    require_object(r, {"min", "max"});
+    const Vec2 lo = vec2(required(r, "min")), hi = vec2(required(r, "max"));
+    if (!(hi[0] > lo[0] && hi[1] > lo[1])) fail(r.at("max"), "max > min in x and y");
+    b.polygon = {lo, {hi[0], lo[1]}, hi, {lo[0], hi[1]}};
+  }
+  return b;
+}
+
+void parse_bodies(const Node& node, Scenario& s) {
+  if (!node.value.is_array() || node.value.empty()) fail(node, "an array of bodies (at least one)");
+  const double tol = 1e-9 * std::max(s.domain_max[0] - s.domain_min[0],
+                                     s.domain_max[1] - s.domain_min[1]);
+  for (std::size_t i = 0; i < node.value.size(); ++i) {
+    const Node body = node.at(i);
+    s.bodies.push_back(parse_body(body, s.materials));
+    const BodySpec& b = s.bodies.back();
+    for (std::size_t k = 0; k < i; ++k) {
+      if (s.bodies[k].name == b.name) fail(body.at("name"), "a name no other body has");
+    }
+    for (const Vec2& v : b.polygon) {
+      if (v[0] < s.domain_min[0] - tol || v[0] > s.domain_max[0] + tol ||
+          v[1] < s.domain_min[1] - tol || v[1] > s.domain_max[1] + tol) {
+        std::ostringstream msg;
+        msg << "vertices inside the domain [" << s.domain_min[0] << ", " << s.domain_max[0]
+            << "] x [" << s.domain_min[1] << ", " << s.domain_max[1] << "], but (" << v[0]
+            << ", " << v[1] << ") is outside";
+        fail(body, msg.str());
+      }
+    }
+    for (std::size_t k = 0; k < i; ++k) {
+      if (s.bodies[k].material != b.material && polygons_overlap(s.bodies[k].polygon, b.polygon))
+        fail_at(node.file, body.path + " (" + b.name + ") overlaps bodies[" + std::to_string(k) +
+                               "] (" + s.bodies[k].name + ") of a different material");
+    }
+  }
+}
+
+Boundaries parse_boundaries(const Node& node) {
+  require_object(node, {"left", "right", "bottom", "top"});
+  auto side = [&](const char* key) {
+    const std::string kind = one_of(required(node, key), {"fixed", "roller", "free"});
+    return kind == "fixed" ? BoundaryKind::Fixed
+                           : kind == "roller" ? BoundaryKind::Roller : BoundaryKind::Free;
+  };
+  return Boundaries{side("left"), side("right"), side("bottom"), side("top")};
+}
+
+TimeStepSpec parse_time_step(const Node& node) {
+  require_object(node, {"courant", "fixed"});
+  if (node.has("courant") == node.has("fixed"))
+    fail(node, "exactly one of \"courant\" or \"fixed\"");
+  TimeStepSpec t;
+  if (node.has("courant")) {
+    t.mode = TimeStepSpec::Mode::Courant;
+    t.courant = number(node.at("courant"), 0, Bound::Open, 0.5, Bound::Closed);
+  } else {
+    t.mode = TimeStepSpec::Mode::Fixed;
+    t.fixed_dt = positive(node.at("fixed"));
+  }
+  return t;
+}
+
+Scenario parse_document(const Json& doc, const std::string& file) {
+  const Node root{doc, "", file};
+  require_object(root, {"name", "description", "domain", "grid", "gravity", "boundaries",
+                        "materials", "bodies", "time_step", "stages", "output"});
+  Scenario s;
+  s.source_path = file;
+  const Node name = required(root, "name");
+  s.name = string(name);
+  if (!std::regex_match(s.name, std::regex("[A-Za-z0-9._-]{1,100}")))
+    fail(name, "1 to 100 characters from A-Z a-z 0-9 . _ -");
+  if (root.has("description")) s.description = string(root.at("description"));
+  const Node domain = required(root, "domain");
+  require_object(domain, {"min", "max"});
+  s.domain_min = vec2(required(domain, "min"));
+  s.domain_max = vec2(required(domain, "max"));
+  if (!(s.domain_max[0] > s.domain_min[0] && s.domain_max[1] > s.domain_min[1]))
+    fail(domain.at("max"), "max > min in x and y");
+  const Node grid = required(root, "grid");
+  require_object(grid, {"cell_size", "padding_cells", "points_per_cell"});
+  s.cell_size = positive(required(grid, "cell_size"));
+  s.padding_cells = integer(required(grid, "padding_cells"), 2, 100);
+  s.points_per_cell = integer(required(grid, "points_per_cell"), 1, 8);
+  s.gravity = vec2(required(root, "gravity"));
+  s.boundaries = parse_boundaries(required(root, "boundaries"));
+  s.materials = parse_materials(required(root, "materials"));
+  check_memory_budget_of_grid(root, s);
+  parse_bodies(required(root, "bodies"), s);
+  check_memory_budget_of_points(root, s);
+  s.time_step = parse_time_step(required(root, "time_step"));
+  s.stages = parse_stages(required(root, "stages"), s.materials);
+  s.output = parse_output(required(root, "output"), s.stages);
+  return s;
+}
+
+}  // namespace
+
+Scenario parse_scenario(const std::string& text, const std::string& label) {
+  Json doc;
+  try {
+    doc = Json::parse(text);
+  } catch (const Json::parse_error& e) {
+    fail_at(label, std::string("invalid JSON: ") + e.what());
+  }
+  try {
+    return parse_document(doc, label);
+  } catch (const ScenarioError&) {
+    throw;
+  } catch (const std::exception& e) {  // a library error the checks above did not foresee
+    fail_at(label, std::string("cannot read the scenario: ") + e.what());
+  }
+}
+
+Scenario load_scenario(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) fail_at(path, "cannot read file: " + std::string(std::strerror(errno)));
+  std::ostringstream text;
+  text << in.rdbuf();
+  return parse_scenario(text.str(), path);
+}
+
+}  // namespace sim

@@ -1,0 +1,27 @@
+// Plane geometry of the scenario's bodies: what validation needs (simple
+// polygons, overlap) and what the point seeder needs (inside test, area).
+#pragma once
+
+#include <vector>
+
+#include "sim/scenario.hpp"
+
+namespace sim {
+
+// Positive for counter-clockwise vertices.
+double signed_area(const std::vector<Vec2>& polygon);
+
+// Even-odd rule with half-open edges: a point exactly on an edge or vertex
+// gets the same answer every time, and two polygons sharing an edge never
+// both claim a point on it.
+bool point_in_polygon(const std::vector<Vec2>& polygon, const Vec2& p);
+
+// No two non-adjacent edges touch, and adjacent edges meet only at their
+// shared vertex.
+bool polygon_is_simple(const std::vector<Vec2>& polygon);
+
+// The two simple polygons share a region of positive area (touching along an
+// edge or at a vertex does not count).
+bool polygons_overlap(const std::vector<Vec2>& a, const std::vector<Vec2>& b);
+
+}  // namespace sim

@@ -1,0 +1,22 @@
+// Pieces of the scenario reader that live in their own file.
+#pragma once
+
+#include <vector>
+
+#include "sim/scenario.hpp"
+#include "sim/scenario_json.hpp"
+
+namespace sim {
+
+std::vector<StageSpec> parse_stages(const scenario_json::Node& node,
+                                    const std::vector<MaterialSpec>& materials);
+OutputSpec parse_output(const scenario_json::Node& node, const std::vector<StageSpec>& stages);
+
+// Limits checked before anything is allocated: a scene asks for at most
+// kMaxPoints points and kMaxGridNodes grid nodes.
+constexpr double kMaxPoints = 20e6;
+constexpr double kMaxGridNodes = 50e6;
+void check_memory_budget_of_grid(const scenario_json::Node& root, const Scenario& s);
+void check_memory_budget_of_points(const scenario_json::Node& root, const Scenario& s);
+
+}  // namespace sim

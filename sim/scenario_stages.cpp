@@ -1,0 +1,182 @@
+// Stages, output settings and the memory budget of a scenario.
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "sim/scenario_geometry.hpp"
+#include "sim/scenario_parts.hpp"
+
+namespace sim {
+
+using namespace scenario_json;
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kInf = HUGE_VAL;
+
+RestCriterion parse_rest(const Node& node, double duration) {
+  require_object(node, {"kinetic_ratio", "min_time"});
+  RestCriterion r;
+  r.enabled = true;
+  r.kinetic_ratio = positive(required(node, "kinetic_ratio"));
+  r.min_time = number(required(node, "min_time"), 0, Bound::Closed, duration, Bound::Closed);
+  return r;
+}
+
+// Applies a material-change stage to `materials` (the state at that stage),
+// so later stages and the dilation <= friction rule see the changed values.
+void parse_changes(const Node& node, StageSpec& stage, std::vector<MaterialSpec>& materials) {
+  const Node name = required(node, "material", "required for a material-change stage");
+  const std::string material = string(name);
+  int index = -1;
+  for (std::size_t i = 0; i < materials.size(); ++i)
+    if (materials[i].name == material) index = static_cast<int>(i);
+  if (index < 0) fail(name, "the name of a material in materials");
+  MaterialSpec& m = materials[index];
+  const Node set = required(node, "set", "required for a material-change stage");
+  if (m.model == MaterialModel::MohrCoulomb)
+    require_object(set, {"cohesion", "friction_angle", "dilation_angle", "youngs_modulus",
+                         "poisson_ratio"});
+  else
+    require_object(set, {"youngs_modulus", "poisson_ratio"});
+  if (set.value.empty()) fail(set, "at least one property to change");
+  for (const auto& item : set.value.items()) {  // nlohmann orders keys alphabetically
+    const Node v = set.at(item.key());
+    MaterialChange c;
+    c.material = index;
+    c.property = item.key();
+    if (c.property == "cohesion") c.value = m.cohesion = non_negative(v);
+    if (c.property == "youngs_modulus") c.value = m.youngs_modulus = positive(v);
+    if (c.property == "poisson_ratio")
+      c.value = m.poisson_ratio = number(v, 0, Bound::Closed, 0.5, Bound::Open);
+    if (c.property == "friction_angle")
+      c.value = m.friction_angle = number(v, 0, Bound::Open, 90, Bound::Open) * kPi / 180;
+    if (c.property == "dilation_angle")
+      c.value = m.dilation_angle = number(v, 0, Bound::Closed, 90, Bound::Open) * kPi / 180;
+    stage.changes.push_back(c);
+  }
+  if (m.dilation_angle > m.friction_angle) {
+    std::ostringstream msg;
+    msg << node.path << " (" << stage.name << ") leaves materials." << m.name
+        << " with dilation_angle " << m.dilation_angle * 180 / kPi << " > friction_angle "
+        << m.friction_angle * 180 / kPi << ": expected dilation_angle <= friction_angle";
+    fail_at(node.file, msg.str());
+  }
+}
+
+StageSpec parse_stage(const Node& node, std::vector<MaterialSpec>& materials) {
+  StageSpec s;
+  if (!node.value.is_object()) fail(node, "an object");
+  const Node type = required(node, "type");
+  const std::string kind = one_of(type, {"gravity", "material-change", "dynamic"});
+  s.name = string(required(node, "name"));
+  if (s.name.empty()) fail(node.at("name"), "a non-empty name");
+  const std::string need = "required for a " + kind + " stage";
+  if (kind == "material-change") {
+    s.type = StageType::MaterialChange;
+    require_object(node, {"name", "type", "material", "set"});
+    parse_changes(node, s, materials);
+    return s;
+  }
+  s.type = kind == "gravity" ? StageType::Gravity : StageType::Dynamic;
+  if (s.type == StageType::Gravity) {
+    require_object(node, {"name", "type", "duration", "ramp_fraction", "damping", "stop_at_rest"});
+    s.duration = positive(required(node, "duration", need));
+    s.ramp_fraction = number(required(node, "ramp_fraction", need), 0, Bound::Open, 1, Bound::Closed);
+    s.damping = non_negative(required(node, "damping", need));
+  } else {
+    require_object(node, {"name", "type", "duration", "damping", "stop_at_rest"});
+    s.duration = positive(required(node, "duration", need));
+    if (node.has("damping")) s.damping = non_negative(node.at("damping"));
+  }
+  if (node.has("stop_at_rest")) s.rest = parse_rest(node.at("stop_at_rest"), s.duration);
+  return s;
+}
+
+}  // namespace
+
+std::vector<StageSpec> parse_stages(const Node& node, const std::vector<MaterialSpec>& materials) {
+  if (!node.value.is_array() || node.value.empty()) fail(node, "an array of stages (at least one)");
+  std::vector<MaterialSpec> current = materials;
+  std::vector<StageSpec> stages;
+  for (std::size_t i = 0; i < node.value.size(); ++i) {
+    stages.push_back(parse_stage(node.at(i), current));
+    for (std::size_t k = 0; k < i; ++k)
+      if (stages[k].name == stages[i].name)
+        fail(node.at(i).at("name"), "a name no other stage has");
+  }
+  return stages;
+}
+
+OutputSpec parse_output(const Node& node, const std::vector<StageSpec>& stages) {
+  require_object(node, {"frame_interval", "frame_stages", "fields", "colour_map",
+                        "displacement_reference", "vtk", "image_size"});
+  OutputSpec o;
+  if (node.has("frame_interval")) o.frame_interval = non_negative(node.at("frame_interval"));
+  if (node.has("frame_stages")) {
+    const Node list = node.at("frame_stages");
+    if (!list.value.is_array()) fail(list, "an array of stage names");
+    for (std::size_t i = 0; i < list.value.size(); ++i) {
+      const std::string name = string(list.at(i));
+      const auto it = std::find_if(stages.begin(), stages.end(),
+                                   [&](const StageSpec& s) { return s.name == name; });
+      if (it == stages.end() || it->type == StageType::MaterialChange)
+        fail(list.at(i), "the name of a gravity or dynamic stage");
+      o.frame_stages.push_back(name);
+    }
+  } else {
+    for (const StageSpec& s : stages)
+      if (s.type != StageType::MaterialChange) o.frame_stages.push_back(s.name);
+  }
+  if (node.has("fields")) {
+    const Node list = node.at("fields");
+    if (!list.value.is_array() || list.value.empty()) fail(list, "a non-empty array of fields");
+    o.fields.clear();
+    for (std::size_t i = 0; i < list.value.size(); ++i) {
+      const std::string f = one_of(list.at(i), {"displacement-x", "displacement-y",
+                                                "relative-yield", "stress-yy", "velocity",
+                                                "material"});
+      if (std::find(o.fields.begin(), o.fields.end(), f) != o.fields.end())
+        fail(list.at(i), "each field once");
+      o.fields.push_back(f);
+    }
+  } else {
+    o.fields = {"displacement-x"};
+  }
+  if (node.has("colour_map")) o.colour_map = one_of(node.at("colour_map"), {"viridis", "jet"});
+  if (node.has("displacement_reference"))
+    o.displacement_reference = one_of(node.at("displacement_reference"), {"initial", "stage-start"});
+  if (node.has("vtk")) o.vtk = one_of(node.at("vtk"), {"none", "stage-end", "frames"});
+  if (node.has("image_size")) {
+    const Node size = node.at("image_size");
+    if (!size.value.is_array() || size.value.size() != 2) fail(size, "[width, height] in pixels");
+    o.image_size = {integer(size.at(0), 64, 8192), integer(size.at(1), 64, 8192)};
+  }
+  return o;
+}
+
+void check_memory_budget_of_grid(const Node& root, const Scenario& s) {
+  const double nodes = ((s.domain_max[0] - s.domain_min[0]) / s.cell_size + 2 * s.padding_cells + 2) *
+                       ((s.domain_max[1] - s.domain_min[1]) / s.cell_size + 2 * s.padding_cells + 2);
+  if (nodes > kMaxGridNodes) {
+    std::ostringstream msg;
+    msg << "a grid of at most " << kMaxGridNodes << " nodes; this domain and cell size need about "
+        << nodes;
+    fail(root.at("grid").at("cell_size"), msg.str());
+  }
+}
+
+void check_memory_budget_of_points(const Node& root, const Scenario& s) {
+  const double spacing = s.cell_size / s.points_per_cell;
+  double points = 0;
+  for (const BodySpec& b : s.bodies) points += std::fabs(signed_area(b.polygon)) / (spacing * spacing);
+  if (points > kMaxPoints) {
+    std::ostringstream msg;
+    msg << "at most " << kMaxPoints << " points; the bodies at this cell size and points_per_cell "
+        << "need about " << points;
+    fail(root.at("grid"), msg.str());
+  }
+}
+
+}  // namespace sim

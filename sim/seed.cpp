@@ -1,0 +1,50 @@
+#include "sim/seed.hpp"
+
+#include <cmath>
+
+#include "sim/scenario_geometry.hpp"
+
+namespace sim {
+
+World make_world(const Scenario& s) {
+  World w;
+  w.grid = make_grid(s);
+  w.material_specs = s.materials;
+  for (const MaterialSpec& m : s.materials) w.materials.push_back(make_material_constants(m));
+
+  // Sub-cell centres on the lattice anchored at the domain's lower-left
+  // corner; a centre belongs to the first body that contains it, so the
+  // characteristic functions stay a partition of unity (Eq. 6).
+  const double spacing = s.cell_size / s.points_per_cell;
+  w.half_width = 0.5 * spacing;
+  const long cols = std::lround(std::ceil((s.domain_max[0] - s.domain_min[0]) / spacing));
+  const long rows = std::lround(std::ceil((s.domain_max[1] - s.domain_min[1]) / spacing));
+  const double volume = spacing * spacing;  // per unit thickness (plane strain)
+  Particles& pts = w.points;
+  for (long r = 0; r < rows; ++r) {
+    for (long c = 0; c < cols; ++c) {
+      const Vec2 centre{s.domain_min[0] + (c + 0.5) * spacing,
+                        s.domain_min[1] + (r + 0.5) * spacing};
+      for (const BodySpec& body : s.bodies) {
+        if (!point_in_polygon(body.polygon, centre)) continue;
+        const MaterialSpec& m = s.materials[body.material];
+        pts.x.push_back(centre[0]);
+        pts.y.push_back(centre[1]);
+        pts.mass.push_back(m.density * volume);  // Eq. (5)
+        pts.density.push_back(m.density);
+        pts.material.push_back(static_cast<std::uint8_t>(body.material));
+        break;
+      }
+    }
+  }
+  const std::size_t n = pts.x.size();
+  for (auto* v : {&pts.vx, &pts.vy, &pts.sxx, &pts.syy, &pts.sxy, &pts.szz}) v->assign(n, 0.0);
+  pts.x0 = pts.x;
+  pts.y0 = pts.y;
+  pts.ref_x = pts.x;
+  pts.ref_y = pts.y;
+  pts.yielded.assign(n, 0);
+  return w;
+}
+
+}  // namespace sim

@@ -1,0 +1,146 @@
+#include "sim/simulation.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <sstream>
+
+#include "sim/seed.hpp"
+
+namespace sim {
+
+namespace {
+
+// Largest Courant number the explicit GIMP step is run at (method notes,
+// section 4): a fixed time step above C h / max(c_p + |v_p|) is refused.
+constexpr double kMaxCourant = 0.5;
+
+// Events closer than this fraction of a step count as reached, so round-off
+// never leaves a sliver step.
+constexpr double kEventSlack = 1e-9;
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
+
+Simulation::Simulation(const Scenario& scenario)
+    : scenario_(scenario), world_(make_world(scenario)) {
+  // Without a gravity stage the body force acts in full from the start.
+  gravity_applied_ = std::none_of(scenario.stages.begin(), scenario.stages.end(),
+                                  [](const StageSpec& s) { return s.type == StageType::Gravity; });
+  gravity_factor_ = gravity_applied_ ? 1.0 : 0.0;
+}
+
+bool Simulation::paints(const StageSpec& stage) const {
+  const auto& names = scenario_.output.frame_stages;
+  return scenario_.output.frame_interval > 0 &&
+         std::find(names.begin(), names.end(), stage.name) != names.end();
+}
+
+void Simulation::run(Observer& observer) {
+  for (const StageSpec& stage : scenario_.stages) {
+    if (stage.type == StageType::MaterialChange) {
+      observer.stage_begins(*this, stage);
+      change_materials(stage);
+      StageResult r;
+      r.name = stage.name;
+      r.type = stage.type;
+      results_.push_back(r);
+      observer.stage_ends(*this, stage, results_.back());
+    } else {
+      run_timed_stage(stage, observer);
+    }
+  }
+}
+
+void Simulation::change_materials(const StageSpec& stage) {
+  // The trigger of the paper (Section 7.1): properties change at once, the
+  // stresses stay and are returned to the new surface by the next step.
+  for (const MaterialChange& c : stage.changes) {
+    apply_material_change(world_.material_specs[c.material], c.property, c.value);
+    world_.materials[c.material] = make_material_constants(world_.material_specs[c.material]);
+  }
+}
+
+// Gravity ramp of the paper's Figure 4: linear over ramp_fraction of the
+// stage, then held.
+double Simulation::stage_gravity_factor(const StageSpec& stage, double t) const {
+  if (stage.type != StageType::Gravity) return gravity_factor_;
+  const double ramp = stage.ramp_fraction * stage.duration;
+  return std::min(1.0, t / ramp);
+}
+
+double Simulation::choose_time_step(double max_signal) const {
+  const double bound = kMaxCourant * world_.grid.h / max_signal;
+  if (scenario_.time_step.mode == TimeStepSpec::Mode::Courant)
+    return scenario_.time_step.courant * world_.grid.h / max_signal;
+  const double dt = scenario_.time_step.fixed_dt;
+  if (dt > bound) {
+    std::ostringstream msg;
+    msg << "time_step.fixed = " << dt << " s exceeds the stable bound " << bound
+        << " s (Courant " << kMaxCourant << ", h = " << world_.grid.h
+        << " m, max c_p + |v_p| = " << max_signal << " m/s) at t = " << time_ << " s";
+    throw SimulationError(msg.str());
+  }
+  return dt;
+}
+
+bool Simulation::at_rest(const StageSpec& stage, const StageResult& r) const {
+  if (!stage.rest.enabled || stage_time_ < stage.rest.min_time) return false;
+  if (stage.type == StageType::Gravity && stage_time_ < stage.ramp_fraction * stage.duration)
+    return false;  // never stop before the full load is on
+  return r.kinetic_energy <= stage.rest.kinetic_ratio * std::max(r.gravity_work, 0.0);
+}
+
+void Simulation::run_timed_stage(const StageSpec& stage, Observer& observer) {
+  const auto wall_start = std::chrono::steady_clock::now();
+  StageResult r;
+  r.name = stage.name;
+  r.type = stage.type;
+  stage_time_ = 0;
+  if (scenario_.output.displacement_reference == "stage-start") {
+    world_.points.ref_x = world_.points.x;
+    world_.points.ref_y = world_.points.y;
+  }
+  observer.stage_begins(*this, stage);
+  const bool painted = paints(stage);
+  const double interval = scenario_.output.frame_interval;
+  long next_frame = 0;  // frame k falls at stage time k * interval
+  double max_signal = max_signal_speed(world_);
+  StepReport report;
+  while (true) {
+    if (painted && next_frame * interval <= stage_time_ + kEventSlack * interval) {
+      observer.frame(*this, stage, frames_++);
+      ++next_frame;
+    }
+    if (stage_time_ >= stage.duration * (1 - kEventSlack) || (r.steps > 0 && at_rest(stage, r))) {
+      r.ended_at_rest = stage_time_ < stage.duration * (1 - kEventSlack);
+      break;
+    }
+    double dt = choose_time_step(max_signal);
+    double until = stage.duration - stage_time_;
+    if (painted) until = std::min(until, next_frame * interval - stage_time_);
+    if (dt >= until * (1 - kEventSlack)) dt = until;
+    const double factor = stage_gravity_factor(stage, stage_time_ + 0.5 * dt);
+    const Vec2 g{factor * scenario_.gravity[0], factor * scenario_.gravity[1]};
+    step(world_, StepInput{dt, g, stage.damping}, report);
+    stage_time_ += dt;
+    time_ += dt;
+    ++r.steps;
+    r.gravity_work += report.gravity_work;
+    r.kinetic_energy = report.kinetic_energy;
+    max_signal = report.max_signal;
+    observer.progress(*this, stage, r.steps);
+  }
+  if (stage.type == StageType::Gravity) gravity_factor_ = 1.0;
+  if (painted && (next_frame - 1) * interval < stage_time_ - kEventSlack * interval)
+    observer.frame(*this, stage, frames_++);  // the stage ended between frame times
+  r.simulated_time = stage_time_;
+  r.wall_time = seconds_since(wall_start);
+  results_.push_back(r);
+  observer.stage_ends(*this, stage, results_.back());
+}
+
+}  // namespace sim

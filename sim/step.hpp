@@ -1,0 +1,39 @@
+// One explicit GIMP time step, in the paper's order (Section 5):
+// update stress first (USF), momentum form, particle velocities updated by
+// increments (Eqs. 26-31).
+#pragma once
+
+#include "sim/world.hpp"
+
+namespace sim {
+
+struct StepInput {
+  double dt = 0;
+  Vec2 gravity{};      // body force per unit mass at this step
+  double damping = 0;  // theta in v := v / (1 + theta) (paper Section 6)
+};
+
+// Sums over all points after the step, taken in a fixed order.
+struct StepReport {
+  double gravity_work = 0;    // work done by gravity during the step, J/m
+  double kinetic_energy = 0;  // after the step (and after damping), J/m
+  double max_signal = 0;      // max_p (c_p + |v_p|), m/s, for the next stable step
+};
+
+void step(World& world, const StepInput& input, StepReport& report);
+
+// The phases, in the order step() runs them. Public so tests can drive them.
+void locate_points(World& world);          // GIMP stencils, Eqs. (12), (13)
+void reset_grid(Grid& grid);
+void points_to_grid(World& world);         // nodal mass and momentum, Eqs. (26), (27)
+void enforce_walls_on_momentum(Grid& grid);
+void update_stress(World& world, double dt);   // Eqs. (31), (24), (21)-(23), (25)
+void grid_forces(World& world, const Vec2& gravity);  // Eqs. (16), (17)
+void update_nodal_momentum(Grid& grid, double dt);    // Eq. (28)
+void grid_to_points(World& world, const StepInput& input, StepReport& report);  // Eqs. (29), (30)
+
+// Largest c_p + |v_p| over the points: the signal speed of the stable step
+// (method notes, section 4).
+double max_signal_speed(const World& world);
+
+}  // namespace sim

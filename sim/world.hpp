@@ -1,0 +1,47 @@
+// Everything one GIMP step reads and writes: the points, the grid, the
+// material constants, and scratch space reused every step (no allocation
+// inside the step once the first step has sized it).
+#pragma once
+
+#include <stdexcept>
+#include <vector>
+
+#include "sim/gimp.hpp"
+#include "sim/grid.hpp"
+#include "sim/material.hpp"
+#include "sim/particles.hpp"
+#include "sim/scenario.hpp"
+
+namespace sim {
+
+// The step found something it cannot go on from (a point leaving the grid, a
+// non-finite value, a time step above the stable bound).
+class SimulationError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct World {
+  Particles points;
+  Grid grid;
+  double half_width = 0;  // l_p of every point (uGIMP keeps the initial size)
+  std::vector<MaterialSpec> material_specs;  // as they stand now (material changes edit them)
+  std::vector<MaterialConstants> materials;
+
+  // Scratch, rebuilt every step.
+  std::vector<Stencil> stencils;  // per point
+  std::vector<int> order;         // points sorted by their stencil's base node
+  std::vector<int> band_start;    // order[band_start[b] .. band_start[b+1]) is band b
+  std::vector<int> bin_count;     // counting-sort workspace
+  std::vector<double> chunk_sums; // per-chunk partial sums of reductions
+};
+
+// Rows of base nodes per band. Two bands apart never share a node (a stencil
+// spans 3 rows), so every other band can be scattered to the grid at once.
+constexpr int kBandRows = 4;
+
+// Points per chunk of a reduction: sums are taken chunk by chunk in a fixed
+// order, so they do not depend on the number of threads.
+constexpr int kReductionChunk = 2048;
+
+}  // namespace sim

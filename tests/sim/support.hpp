@@ -1,0 +1,33 @@
+// Small scenes built in code for the solver's unit tests.
+#pragma once
+
+#include "sim/scenario.hpp"
+
+namespace simtest {
+
+// One linear-elastic rectangle body on a padded grid, walls free unless set.
+inline sim::Scenario block_scenario(sim::Vec2 lo, sim::Vec2 hi, double h, int ppc,
+                                    sim::Vec2 domain_lo, sim::Vec2 domain_hi) {
+  sim::Scenario s;
+  s.name = "block";
+  s.domain_min = domain_lo;
+  s.domain_max = domain_hi;
+  s.cell_size = h;
+  s.padding_cells = 2;
+  s.points_per_cell = ppc;
+  sim::MaterialSpec m;
+  m.name = "elastic";
+  m.density = 2000;
+  m.youngs_modulus = 20e6;
+  m.poisson_ratio = 0.25;
+  s.materials.push_back(m);
+  sim::BodySpec b;
+  b.name = "block";
+  b.material = 0;
+  b.polygon = {{lo[0], lo[1]}, {hi[0], lo[1]}, {hi[0], hi[1]}, {lo[0], hi[1]}};
+  s.bodies.push_back(b);
+  s.time_step.courant = 0.5;
+  return s;
+}
+
+}  // namespace simtest

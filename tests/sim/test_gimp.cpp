@@ -1,0 +1,75 @@
+// GIMP weights (Eqs. 12, 13; method notes section 1): partition of unity,
+// gradients that sum to zero, and a gradient that is the weight's derivative.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "sim/gimp.hpp"
+
+namespace {
+
+constexpr double kH = 0.5;
+
+TEST(GimpWeights, SumToOneAndGradientsToZeroAtRandomPositions) {
+  std::mt19937_64 rng(7);
+  for (const int ppc : {1, 2, 3, 4}) {
+    const double lp = kH / (2.0 * ppc);
+    std::uniform_real_distribution<double> pos(2.0, 8.0);
+    for (int k = 0; k < 20000; ++k) {
+      sim::Stencil st;
+      sim::gimp_stencil(pos(rng), pos(rng), -1.0, -1.0, kH, lp, st);
+      double sum = 0, gx = 0, gy = 0;
+      for (int b = 0; b < 3; ++b)
+        for (int a = 0; a < 3; ++a) {
+          sum += st.wx[a] * st.wy[b];
+          gx += st.dx[a] * st.wy[b];
+          gy += st.wx[a] * st.dy[b];
+          EXPECT_GE(st.wx[a] * st.wy[b], 0.0);
+        }
+      ASSERT_NEAR(sum, 1.0, 1e-13) << "ppc " << ppc;
+      ASSERT_NEAR(gx, 0.0, 1e-11);
+      ASSERT_NEAR(gy, 0.0, 1e-11);
+    }
+  }
+}
+
+TEST(GimpWeights, DerivativeMatchesFiniteDifferenceAndWeightIsContinuous) {
+  const double lp = kH / 4;
+  for (double xi = -1.3 * kH; xi <= 1.3 * kH; xi += 0.0137 * kH) {
+    double s, ds, sp, dsp, sm, dsm;
+    sim::gimp_weight_1d(xi, kH, lp, s, ds);
+    const double e = 1e-7;
+    sim::gimp_weight_1d(xi + e, kH, lp, sp, dsp);
+    sim::gimp_weight_1d(xi - e, kH, lp, sm, dsm);
+    EXPECT_NEAR((sp - sm) / (2 * e), ds, 1e-5) << "xi = " << xi;
+    EXPECT_NEAR(sp, sm, 1e-6) << "weight jumps at xi = " << xi;
+  }
+}
+
+TEST(GimpWeights, ReproducesLinearFields) {
+  // sum_i S_ip x_i = x_p: GIMP interpolates a linear field exactly, which is
+  // why a rigid motion produces no strain.
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> pos(1.0, 4.0);
+  const double lp = kH / 4, ox = -0.3, oy = 0.2;
+  for (int k = 0; k < 1000; ++k) {
+    const double xp = pos(rng), yp = pos(rng);
+    sim::Stencil st;
+    sim::gimp_stencil(xp, yp, ox, oy, kH, lp, st);
+    double x = 0, y = 0, dxdx = 0, dydy = 0;
+    for (int b = 0; b < 3; ++b)
+      for (int a = 0; a < 3; ++a) {
+        const double xi = ox + (st.base_i + a) * kH, yi = oy + (st.base_j + b) * kH;
+        x += st.wx[a] * st.wy[b] * xi;
+        y += st.wx[a] * st.wy[b] * yi;
+        dxdx += st.dx[a] * st.wy[b] * xi;
+        dydy += st.wx[a] * st.dy[b] * yi;
+      }
+    EXPECT_NEAR(x, xp, 1e-12);
+    EXPECT_NEAR(y, yp, 1e-12);
+    EXPECT_NEAR(dxdx, 1.0, 1e-12);
+    EXPECT_NEAR(dydy, 1.0, 1e-12);
+  }
+}
+
+}  // namespace

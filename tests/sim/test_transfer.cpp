@@ -1,0 +1,86 @@
+// Particle-to-grid and grid-to-particle transfers (Eqs. 26-30).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "sim/seed.hpp"
+#include "sim/step.hpp"
+#include "support.hpp"
+
+namespace {
+
+TEST(Transfer, PointsToGridKeepsMassAndMomentum) {
+  sim::World w = sim::make_world(
+      simtest::block_scenario({1.0, 1.0}, {3.0, 2.5}, 0.25, 2, {0, 0}, {5, 4}));
+  ASSERT_EQ(w.points.size(), 8u * 6u * 4u);
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> u(-1, 1);
+  double mass = 0, px = 0, py = 0;
+  for (std::size_t p = 0; p < w.points.size(); ++p) {
+    w.points.x[p] += 0.05 * u(rng);  // off the lattice
+    w.points.vx[p] = u(rng);
+    w.points.vy[p] = u(rng);
+    mass += w.points.mass[p];
+    px += w.points.mass[p] * w.points.vx[p];
+    py += w.points.mass[p] * w.points.vy[p];
+  }
+  sim::locate_points(w);
+  sim::reset_grid(w.grid);
+  sim::points_to_grid(w);
+  double gm = 0, gpx = 0, gpy = 0;
+  for (std::size_t k = 0; k < w.grid.mass.size(); ++k) {
+    gm += w.grid.mass[k];
+    gpx += w.grid.px[k];
+    gpy += w.grid.py[k];
+  }
+  EXPECT_NEAR(gm, mass, 1e-12 * mass);
+  EXPECT_NEAR(gpx, px, 1e-10 * mass);
+  EXPECT_NEAR(gpy, py, 1e-10 * mass);
+}
+
+TEST(Transfer, RigidTranslationIsReproduced) {
+  // A free block moving at constant velocity without gravity: no strain, no
+  // stress, every point moves by v t and keeps its velocity.
+  sim::World w = sim::make_world(
+      simtest::block_scenario({1.0, 1.0}, {2.0, 1.5}, 0.25, 2, {0, 0}, {6, 4}));
+  const double vx = 3.0, vy = -1.0, dt = 1e-3;
+  for (std::size_t p = 0; p < w.points.size(); ++p) {
+    w.points.vx[p] = vx;
+    w.points.vy[p] = vy;
+  }
+  sim::StepReport report;
+  const int steps = 200;
+  for (int k = 0; k < steps; ++k) sim::step(w, sim::StepInput{dt, {0, 0}, 0}, report);
+  for (std::size_t p = 0; p < w.points.size(); ++p) {
+    EXPECT_NEAR(w.points.x[p], w.points.x0[p] + vx * dt * steps, 1e-11);
+    EXPECT_NEAR(w.points.y[p], w.points.y0[p] + vy * dt * steps, 1e-11);
+    EXPECT_NEAR(w.points.vx[p], vx, 1e-11);
+    EXPECT_NEAR(w.points.vy[p], vy, 1e-11);
+    EXPECT_NEAR(w.points.sxx[p], 0.0, 1e-3);
+    EXPECT_NEAR(w.points.syy[p], 0.0, 1e-3);
+    EXPECT_NEAR(w.points.sxy[p], 0.0, 1e-3);
+    EXPECT_NEAR(w.points.density[p], 2000.0, 1e-9);
+  }
+  const double mass = w.points.mass[0] * w.points.size();
+  EXPECT_NEAR(report.kinetic_energy, 0.5 * mass * (vx * vx + vy * vy), 1e-9 * mass);
+}
+
+TEST(Transfer, PointLeavingTheGridIsAClearError) {
+  sim::World w = sim::make_world(
+      simtest::block_scenario({1.0, 1.0}, {2.0, 1.5}, 0.25, 2, {0, 0}, {3, 2}));
+  w.points.x[5] = 50.0;
+  try {
+    sim::locate_points(w);
+    FAIL() << "no error for a point outside the grid";
+  } catch (const sim::SimulationError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("point 5"), std::string::npos) << what;
+    EXPECT_NE(what.find("left the grid"), std::string::npos) << what;
+    EXPECT_NE(what.find("50"), std::string::npos) << what;
+  }
+  w.points.x[5] = std::nan("");
+  EXPECT_THROW(sim::locate_points(w), sim::SimulationError);
+}
+
+}  // namespace
