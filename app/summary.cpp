@@ -27,6 +27,7 @@ nlohmann::json make_summary(const sim::Simulation& simulation, int threads, doub
                       {"steps", r.steps},
                       {"ended_at_rest", r.ended_at_rest},
                       {"kinetic_energy_J_per_m", r.kinetic_energy},
+                      {"moving_kinetic_energy_J_per_m", r.moving_kinetic_energy},
                       {"gravity_work_J_per_m", r.gravity_work}});
   }
   return {{"scenario", s.name},

@@ -48,11 +48,11 @@ void grid_to_points(World& w, const StepInput& in, StepReport& report) {
   const Grid& g = w.grid;
   const int n = static_cast<int>(pts.size());
   const int chunks = (n + kReductionChunk - 1) / kReductionChunk;
-  w.chunk_sums.assign(3 * static_cast<std::size_t>(chunks), 0.0);
+  w.chunk_sums.assign(4 * static_cast<std::size_t>(chunks), 0.0);
   const double keep = 1.0 / (1.0 + in.damping);  // v := v / (1 + theta)
 #pragma omp parallel for schedule(static)
   for (int c = 0; c < chunks; ++c) {
-    double work = 0, kinetic = 0, signal = 0;
+    double work = 0, kinetic = 0, moving = 0, signal = 0;
     const int end = std::min(n, (c + 1) * kReductionChunk);
     for (int p = c * kReductionChunk; p < end; ++p) {
       const Stencil& st = w.stencils[p];
@@ -76,17 +76,20 @@ void grid_to_points(World& w, const StepInput& in, StepReport& report) {
       const double v2 = pts.vx[p] * pts.vx[p] + pts.vy[p] * pts.vy[p];
       work += m * (in.gravity[0] * dx + in.gravity[1] * dy);
       kinetic += 0.5 * m * v2;
+      moving += 0.5 * m * (vx * vx + vy * vy);
       signal = std::max(signal, w.materials[pts.material[p]].wave_speed + std::sqrt(v2));
     }
-    w.chunk_sums[3 * c] = work;
-    w.chunk_sums[3 * c + 1] = kinetic;
-    w.chunk_sums[3 * c + 2] = signal;
+    w.chunk_sums[4 * c] = work;
+    w.chunk_sums[4 * c + 1] = kinetic;
+    w.chunk_sums[4 * c + 2] = moving;
+    w.chunk_sums[4 * c + 3] = signal;
   }
   report = StepReport{};
   for (int c = 0; c < chunks; ++c) {
-    report.gravity_work += w.chunk_sums[3 * c];
-    report.kinetic_energy += w.chunk_sums[3 * c + 1];
-    report.max_signal = std::max(report.max_signal, w.chunk_sums[3 * c + 2]);
+    report.gravity_work += w.chunk_sums[4 * c];
+    report.kinetic_energy += w.chunk_sums[4 * c + 1];
+    report.moving_kinetic_energy += w.chunk_sums[4 * c + 2];
+    report.max_signal = std::max(report.max_signal, w.chunk_sums[4 * c + 3]);
   }
 }
 

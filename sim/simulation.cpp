@@ -91,7 +91,7 @@ bool Simulation::at_rest(const StageSpec& stage, const StageResult& r) const {
   if (!stage.rest.enabled || stage_time_ < stage.rest.min_time) return false;
   if (stage.type == StageType::Gravity && stage_time_ < stage.ramp_fraction * stage.duration)
     return false;  // never stop before the full load is on
-  return r.kinetic_energy <= stage.rest.kinetic_ratio * std::max(r.gravity_work, 0.0);
+  return r.moving_kinetic_energy <= stage.rest.kinetic_ratio * std::max(r.gravity_work, 0.0);
 }
 
 void Simulation::run_timed_stage(const StageSpec& stage, Observer& observer) {
@@ -131,6 +131,7 @@ void Simulation::run_timed_stage(const StageSpec& stage, Observer& observer) {
     ++r.steps;
     r.gravity_work += report.gravity_work;
     r.kinetic_energy = report.kinetic_energy;
+    r.moving_kinetic_energy = report.moving_kinetic_energy;
     max_signal = report.max_signal;
     observer.progress(*this, stage, r.steps);
   }

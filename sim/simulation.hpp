@@ -19,7 +19,8 @@ struct StageResult {
   double wall_time = 0;       // s
   long steps = 0;
   bool ended_at_rest = false;  // by its stop_at_rest criterion, before its duration
-  double kinetic_energy = 0;   // at the end, J/m
+  double kinetic_energy = 0;   // of the points at the end, J/m
+  double moving_kinetic_energy = 0;  // of the velocity that moves the points (the rest criterion)
   double gravity_work = 0;     // during the stage, J/m
 };
 

@@ -137,14 +137,20 @@ void points_to_grid(World& w) {
 
 // Walls hold nodal momentum components at zero (paper Section 6). Nodal
 // velocity v_i = p_i / m_i is what the strain increment of Eq. (31) reads.
+// The velocity a wall takes away is kept (in ax, ay) and handed to the points
+// with the step's acceleration: with the incremental update of Eq. (30) a
+// point would otherwise keep the speed a no-slip wall stopped, and a deposit
+// against a wall would never come to rest.
 void enforce_walls_on_momentum(Grid& g) {
 #pragma omp parallel for schedule(static)
   for (int j = g.j_begin; j < g.j_end; ++j) {
     for (int i = g.i_begin; i < g.i_end; ++i) {
       const int k = g.node(i, j);
+      const double inv = g.mass[k] > 0.0 ? 1.0 / g.mass[k] : 0.0;
+      g.ax[k] = g.fix_x[k] ? -g.px[k] * inv : 0.0;
+      g.ay[k] = g.fix_y[k] ? -g.py[k] * inv : 0.0;
       if (g.fix_x[k]) g.px[k] = 0.0;
       if (g.fix_y[k]) g.py[k] = 0.0;
-      const double inv = g.mass[k] > 0.0 ? 1.0 / g.mass[k] : 0.0;
       g.vx[k] = g.px[k] * inv;
       g.vy[k] = g.py[k] * inv;
     }
@@ -173,7 +179,10 @@ void grid_forces(World& w, const Vec2& gravity) {
 }
 
 // Eq. (28): p_i^{k+1} = p_i^k + dt f_i. Walls take the force normal to them.
+// The nodal acceleration handed to the points (Eq. 30) is the whole velocity
+// change of the step: force plus what the wall took away.
 void update_nodal_momentum(Grid& g, double dt) {
+  const double inv_dt = 1.0 / dt;
 #pragma omp parallel for schedule(static)
   for (int j = g.j_begin; j < g.j_end; ++j) {
     for (int i = g.i_begin; i < g.i_end; ++i) {
@@ -183,8 +192,8 @@ void update_nodal_momentum(Grid& g, double dt) {
       g.px[k] += dt * g.fx[k];
       g.py[k] += dt * g.fy[k];
       const double inv = g.mass[k] > 0.0 ? 1.0 / g.mass[k] : 0.0;
-      g.ax[k] = g.fx[k] * inv;
-      g.ay[k] = g.fy[k] * inv;
+      g.ax[k] = g.ax[k] * inv_dt + g.fx[k] * inv;
+      g.ay[k] = g.ay[k] * inv_dt + g.fy[k] * inv;
       g.vx[k] = g.px[k] * inv;
       g.vy[k] = g.py[k] * inv;
     }

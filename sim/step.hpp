@@ -16,7 +16,11 @@ struct StepInput {
 // Sums over all points after the step, taken in a fixed order.
 struct StepReport {
   double gravity_work = 0;    // work done by gravity during the step, J/m
-  double kinetic_energy = 0;  // after the step (and after damping), J/m
+  double kinetic_energy = 0;  // of the points after the step (and after damping), J/m
+  // Of the velocity that moves the points, sum_i S_ip v_i^{k+1} (Eq. 29).
+  // Point velocities (Eq. 30) can keep a part the grid cannot see, a null
+  // space of the incremental update, so rest is judged on this one.
+  double moving_kinetic_energy = 0;
   double max_signal = 0;      // max_p (c_p + |v_p|), m/s, for the next stable step
 };
 
