@@ -66,8 +66,12 @@ double signed_area(const std::vector<Vec2>& poly) {
 bool point_in_polygon(const std::vector<Vec2>& poly, const Vec2& p) {
   bool inside = false;
   for (std::size_t i = 0, j = poly.size() - 1; i < poly.size(); j = i++) {
-    const Vec2& a = poly[i];
-    const Vec2& b = poly[j];
+    // Each edge is taken from its lower end, so two polygons that share it
+    // (traversing it in opposite directions) compute the same crossing x to
+    // the last bit, and exactly one of them claims a point on it.
+    const bool up = poly[i][1] < poly[j][1] || (poly[i][1] == poly[j][1] && poly[i][0] < poly[j][0]);
+    const Vec2& a = up ? poly[i] : poly[j];
+    const Vec2& b = up ? poly[j] : poly[i];
     if ((a[1] > p[1]) != (b[1] > p[1])) {
       const double x = a[0] + (p[1] - a[1]) * (b[0] - a[0]) / (b[1] - a[1]);
       if (p[0] < x) inside = !inside;
