@@ -21,6 +21,7 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 
 MaterialSpec parse_material(const Node& node, const std::string& name) {
+  if (!node.value.is_object()) fail(node, "an object");
   const std::string model = one_of(required(node, "model"), {"linear-elastic", "mohr-coulomb"});
   MaterialSpec m;
   m.name = name;
@@ -36,11 +37,14 @@ MaterialSpec parse_material(const Node& node, const std::string& name) {
   m.poisson_ratio = number(required(node, "poisson_ratio", need), 0, Bound::Closed, 0.5, Bound::Open);
   if (m.model == MaterialModel::MohrCoulomb) {
     m.cohesion = non_negative(required(node, "cohesion", need));
-    m.friction_angle =
-        number(required(node, "friction_angle", need), 0, Bound::Open, 90, Bound::Open) * kPi / 180;
-    const Node dilation = required(node, "dilation_angle", need);
-    m.dilation_angle = number(dilation, 0, Bound::Closed, m.friction_angle * 180 / kPi,
-                              Bound::Closed) * kPi / 180;
+    // Compared in degrees as given: a round trip through radians could put
+    // the bound a hair below an equal dilation angle.
+    const double friction =
+        number(required(node, "friction_angle", need), 0, Bound::Open, 90, Bound::Open);
+    const double dilation = number(required(node, "dilation_angle", need), 0, Bound::Closed,
+                                   friction, Bound::Closed);
+    m.friction_angle = friction * kPi / 180;
+    m.dilation_angle = dilation * kPi / 180;
   }
   return m;
 }
