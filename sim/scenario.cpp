@@ -186,12 +186,7 @@ Scenario parse_document(const Json& doc, const std::string& file) {
 }  // namespace
 
 Scenario parse_scenario(const std::string& text, const std::string& label) {
-  Json doc;
-  try {
-    doc = Json::parse(text);
-  } catch (const Json::parse_error& e) {
-    fail_at(label, std::string("invalid JSON: ") + e.what());
-  }
+  const Json doc = parse_text(text, label);
   try {
     return parse_document(doc, label);
   } catch (const ScenarioError&) {

@@ -2,7 +2,9 @@
 
 #include <cmath>
 #include <limits>
+#include <set>
 #include <sstream>
+#include <vector>
 
 namespace sim::scenario_json {
 
@@ -56,6 +58,77 @@ Node required(const Node& parent, const std::string& key, const std::string& why
 
 namespace {
 
+// Follows the parser through the document as a JSON path, so a number that
+// overflows a double and a repeated key are reported where they are (the DOM
+// parser would reject the first without a place and silently keep the last
+// of the second).
+class PathTracker : public nlohmann::json_sax<Json> {
+ public:
+  std::string error;  // why the parse stopped
+
+  bool null() override { return value(); }
+  bool boolean(bool) override { return value(); }
+  bool number_integer(number_integer_t) override { return value(); }
+  bool number_unsigned(number_unsigned_t) override { return value(); }
+  bool number_float(number_float_t, const string_t&) override { return value(); }
+  bool string(string_t&) override { return value(); }
+  bool binary(binary_t&) override { return value(); }
+  bool start_object(std::size_t) override {
+    frames_.push_back(Frame{true, {}, {}, 0});
+    return true;
+  }
+  bool key(string_t& key) override {
+    Frame& f = frames_.back();
+    f.key = key;
+    if (f.keys.insert(key).second) return true;
+    error = path() + ": key given twice in one object (each key at most once)";
+    return false;
+  }
+  bool end_object() override {
+    frames_.pop_back();
+    return value();
+  }
+  bool start_array(std::size_t) override {
+    frames_.push_back(Frame{false, {}, {}, 0});
+    return true;
+  }
+  bool end_array() override {
+    frames_.pop_back();
+    return value();
+  }
+  bool parse_error(std::size_t, const std::string& token, const Json::exception& e) override {
+    if (e.id == 406)  // number overflow
+      error = (frames_.empty() ? std::string("(top level)") : path()) + " = " + token +
+              ": expected a finite number (this one is too large for a double)";
+    else
+      error = std::string("invalid JSON: ") + e.what();
+    return false;
+  }
+
+ private:
+  struct Frame {
+    bool object;
+    std::set<std::string> keys;
+    std::string key;
+    std::size_t index;
+  };
+
+  // A value ended: the next one in an array has the next index.
+  bool value() {
+    if (!frames_.empty() && !frames_.back().object) ++frames_.back().index;
+    return true;
+  }
+
+  std::string path() const {
+    std::string p;
+    for (const Frame& f : frames_)
+      p += f.object ? (p.empty() ? f.key : "." + f.key) : "[" + std::to_string(f.index) + "]";
+    return p;
+  }
+
+  std::vector<Frame> frames_;
+};
+
 std::string format_bound(double v) {
   if (std::isinf(v)) return v < 0 ? "-inf" : "inf";
   std::ostringstream s;
@@ -64,6 +137,16 @@ std::string format_bound(double v) {
 }
 
 }  // namespace
+
+Json parse_text(const std::string& text, const std::string& file) {
+  PathTracker tracker;
+  try {
+    if (!Json::sax_parse(text, &tracker)) fail_at(file, tracker.error);
+    return Json::parse(text);
+  } catch (const Json::exception& e) {  // not expected once the tracker has passed the text
+    fail_at(file, std::string("invalid JSON: ") + e.what());
+  }
+}
 
 double number(const Node& node, double lo, Bound lo_kind, double hi, Bound hi_kind) {
   const std::string range = (lo_kind == Bound::Closed ? "[" : "(") + format_bound(lo) + ", " +

@@ -24,6 +24,10 @@ struct Node {
   bool has(const std::string& key) const;
 };
 
+// The document in `text`. A syntax error, a number too large for a double and
+// a key given twice in one object are ScenarioErrors naming `file`.
+Json parse_text(const std::string& text, const std::string& file);
+
 [[noreturn]] void fail(const Node& node, const std::string& expected);
 [[noreturn]] void fail_missing(const Node& parent, const std::string& key, const std::string& why);
 [[noreturn]] void fail_at(const std::string& file, const std::string& message);
