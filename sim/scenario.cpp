@@ -4,6 +4,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <regex>
 #include <sstream>
@@ -197,6 +198,8 @@ Scenario parse_scenario(const std::string& text, const std::string& label) {
 }
 
 Scenario load_scenario(const std::string& path) {
+  std::error_code ec;  // a directory opens as a stream and then reads as empty text
+  if (std::filesystem::is_directory(path, ec)) fail_at(path, "cannot read file: it is a directory");
   std::ifstream in(path, std::ios::binary);
   if (!in) fail_at(path, "cannot read file: " + std::string(std::strerror(errno)));
   std::ostringstream text;

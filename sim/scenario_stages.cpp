@@ -159,7 +159,7 @@ OutputSpec parse_output(const Node& node, const std::vector<StageSpec>& stages) 
 void check_memory_budget_of_grid(const Node& root, const Scenario& s) {
   const double nodes = ((s.domain_max[0] - s.domain_min[0]) / s.cell_size + 2 * s.padding_cells + 2) *
                        ((s.domain_max[1] - s.domain_min[1]) / s.cell_size + 2 * s.padding_cells + 2);
-  if (nodes > kMaxGridNodes) {
+  if (!(nodes <= kMaxGridNodes)) {
     std::ostringstream msg;
     msg << "a grid of at most " << kMaxGridNodes << " nodes; this domain and cell size need about "
         << nodes;
@@ -168,10 +168,18 @@ void check_memory_budget_of_grid(const Node& root, const Scenario& s) {
 }
 
 void check_memory_budget_of_points(const Node& root, const Scenario& s) {
+  // Areas in units of the point spacing, measured from the domain's corner:
+  // bounded by the grid budget, where square metres of a scene with huge
+  // coordinates could overflow to inf / inf = NaN and slip through.
   const double spacing = s.cell_size / s.points_per_cell;
   double points = 0;
-  for (const BodySpec& b : s.bodies) points += std::fabs(signed_area(b.polygon)) / (spacing * spacing);
-  if (points > kMaxPoints) {
+  for (const BodySpec& b : s.bodies) {
+    std::vector<Vec2> scaled = b.polygon;
+    for (Vec2& v : scaled)
+      v = {(v[0] - s.domain_min[0]) / spacing, (v[1] - s.domain_min[1]) / spacing};
+    points += std::fabs(signed_area(scaled));
+  }
+  if (!(points <= kMaxPoints)) {
     std::ostringstream msg;
     msg << "at most " << kMaxPoints << " points; the bodies at this cell size and points_per_cell "
         << "need about " << points;
