@@ -1,5 +1,7 @@
 #include "app/summary.hpp"
 
+#include <cmath>
+
 namespace app {
 
 namespace {
@@ -11,6 +13,36 @@ const char* stage_type_name(sim::StageType t) {
     case sim::StageType::Dynamic: return "dynamic";
   }
   return "?";
+}
+
+nlohmann::json energy_json(const sim::EnergyBalance& e) {
+  return {{"external_work_J_per_m", e.external_work},
+          {"kinetic_energy_change_J_per_m", e.kinetic_change},
+          {"internal_work_J_per_m", e.internal_work},
+          {"elastic_energy_change_J_per_m", e.elastic_energy_change},
+          {"plastic_dissipation_J_per_m", e.plastic_dissipation},
+          {"damping_loss_J_per_m", e.damping_loss},
+          {"wall_loss_J_per_m", e.wall_loss},
+          {"relative_error", e.relative_error}};
+}
+
+nlohmann::json metrics_json(const sim::StageMetrics& m) {
+  nlohmann::json materials = nlohmann::json::array();
+  for (const sim::MaterialMotion& mm : m.materials)
+    materials.push_back({{"material", mm.material},
+                         {"mean_ux_m", mm.mean_ux},
+                         {"mean_uy_m", mm.mean_uy},
+                         {"max_displacement_m", mm.max_displacement}});
+  nlohmann::json slope = nullptr;  // JSON has no NaN
+  if (std::isfinite(m.deposit_slope_deg)) slope = m.deposit_slope_deg;
+  return {{"max_soil_horizontal_displacement_m", m.max_soil_ux},
+          {"initial_front_x_m", m.initial_front},
+          {"front_x_m", m.front},
+          {"runout_m", m.runout},
+          {"main_body_fraction", m.main_body_fraction},
+          {"yielding_fraction", m.yielding_fraction},
+          {"deposit_slope_deg", slope},
+          {"materials", materials}};
 }
 
 }  // namespace
@@ -29,6 +61,10 @@ nlohmann::json make_summary(const sim::Simulation& simulation, int threads, doub
                       {"kinetic_energy_J_per_m", r.kinetic_energy},
                       {"moving_kinetic_energy_J_per_m", r.moving_kinetic_energy},
                       {"gravity_work_J_per_m", r.gravity_work}});
+    if (r.type != sim::StageType::MaterialChange) {
+      stages.back()["energy"] = energy_json(r.energy);
+      stages.back()["metrics"] = metrics_json(r.metrics);
+    }
   }
   return {{"scenario", s.name},
           {"scenario_file", s.source_path},

@@ -26,6 +26,8 @@ struct Grid {
   // Every nodal loop runs over this window only, so empty air costs nothing.
   int i_begin = 0, i_end = 0, j_begin = 0, j_end = 0;
 
+  std::vector<double> row_sums;  // per-row partial sums, added in a fixed order
+
   int node(int i, int j) const { return j * nx + i; }
 };
 

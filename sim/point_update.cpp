@@ -9,38 +9,53 @@
 
 namespace sim {
 
-void update_stress(World& w, double dt) {
+double update_stress(World& w, double dt) {
   Particles& pts = w.points;
   const Grid& g = w.grid;
   const int n = static_cast<int>(pts.size());
+  const int chunks = (n + kReductionChunk - 1) / kReductionChunk;
+  w.chunk_sums.assign(static_cast<std::size_t>(chunks), 0.0);
 #pragma omp parallel for schedule(static)
-  for (int p = 0; p < n; ++p) {
-    const Stencil& st = w.stencils[p];
-    // Velocity gradient L_ab = sum_i v_ia dS_ip/dx_b.
-    double lxx = 0, lxy = 0, lyx = 0, lyy = 0;
-    for (int b = 0; b < 3; ++b) {
-      const int row = g.node(st.base_i, st.base_j + b);
-      for (int a = 0; a < 3; ++a) {
-        const double gx = st.dx[a] * st.wy[b], gy = st.wx[a] * st.dy[b];
-        lxx += g.vx[row + a] * gx;
-        lxy += g.vx[row + a] * gy;
-        lyx += g.vy[row + a] * gx;
-        lyy += g.vy[row + a] * gy;
+  for (int c = 0; c < chunks; ++c) {
+    double work = 0;
+    const int end = std::min(n, (c + 1) * kReductionChunk);
+    for (int p = c * kReductionChunk; p < end; ++p) {
+      const Stencil& st = w.stencils[p];
+      // Velocity gradient L_ab = sum_i v_ia dS_ip/dx_b.
+      double lxx = 0, lxy = 0, lyx = 0, lyy = 0;
+      for (int b = 0; b < 3; ++b) {
+        const int row = g.node(st.base_i, st.base_j + b);
+        for (int a = 0; a < 3; ++a) {
+          const double gx = st.dx[a] * st.wy[b], gy = st.wx[a] * st.dy[b];
+          lxx += g.vx[row + a] * gx;
+          lxy += g.vx[row + a] * gy;
+          lyx += g.vy[row + a] * gx;
+          lyy += g.vy[row + a] * gy;
+        }
       }
+      const StrainIncrement de{dt * lxx, dt * lyy, 0.5 * dt * (lxy + lyx)};  // Eq. (31)
+      const MaterialConstants& mat = w.materials[pts.material[p]];
+      const Stress old{pts.sxx[p], pts.syy[p], pts.sxy[p], pts.szz[p]};
+      Stress s = old;
+      jaumann_rotate(s, 0.5 * dt * (lxy - lyx));  // Eq. (24)
+      elastic_predictor(s, de, mat);              // Eq. (21)
+      if (mat.plastic)                            // Eqs. (20)-(23)
+        pts.yielded[p] = mohr_coulomb_return(mat.mohr_coulomb, s) != ReturnRegion::Elastic;
+      pts.sxx[p] = s.xx;
+      pts.syy[p] = s.yy;
+      pts.sxy[p] = s.xy;
+      pts.szz[p] = s.zz;
+      // Stress power of Eq. (3) over the step, midpoint stress, current volume.
+      const double volume = pts.mass[p] / pts.density[p];
+      work += volume * 0.5 * ((old.xx + s.xx) * de.xx + (old.yy + s.yy) * de.yy +
+                              2.0 * (old.xy + s.xy) * de.xy);
+      pts.density[p] *= std::exp(-(de.xx + de.yy));  // Eq. (25)
     }
-    const StrainIncrement de{dt * lxx, dt * lyy, 0.5 * dt * (lxy + lyx)};  // Eq. (31)
-    const MaterialConstants& mat = w.materials[pts.material[p]];
-    Stress s{pts.sxx[p], pts.syy[p], pts.sxy[p], pts.szz[p]};
-    jaumann_rotate(s, 0.5 * dt * (lxy - lyx));  // Eq. (24)
-    elastic_predictor(s, de, mat);              // Eq. (21)
-    if (mat.plastic)                            // Eqs. (20)-(23)
-      pts.yielded[p] = mohr_coulomb_return(mat.mohr_coulomb, s) != ReturnRegion::Elastic;
-    pts.sxx[p] = s.xx;
-    pts.syy[p] = s.yy;
-    pts.sxy[p] = s.xy;
-    pts.szz[p] = s.zz;
-    pts.density[p] *= std::exp(-(de.xx + de.yy));  // Eq. (25)
+    w.chunk_sums[c] = work;
   }
+  double work = 0;
+  for (int c = 0; c < chunks; ++c) work += w.chunk_sums[c];
+  return work;
 }
 
 void grid_to_points(World& w, const StepInput& in, StepReport& report) {
@@ -48,11 +63,11 @@ void grid_to_points(World& w, const StepInput& in, StepReport& report) {
   const Grid& g = w.grid;
   const int n = static_cast<int>(pts.size());
   const int chunks = (n + kReductionChunk - 1) / kReductionChunk;
-  w.chunk_sums.assign(4 * static_cast<std::size_t>(chunks), 0.0);
+  w.chunk_sums.assign(5 * static_cast<std::size_t>(chunks), 0.0);
   const double keep = 1.0 / (1.0 + in.damping);  // v := v / (1 + theta)
 #pragma omp parallel for schedule(static)
   for (int c = 0; c < chunks; ++c) {
-    double work = 0, kinetic = 0, moving = 0, signal = 0;
+    double work = 0, kinetic = 0, moving = 0, damped = 0, signal = 0;
     const int end = std::min(n, (c + 1) * kReductionChunk);
     for (int p = c * kReductionChunk; p < end; ++p) {
       const Stencil& st = w.stencils[p];
@@ -70,26 +85,31 @@ void grid_to_points(World& w, const StepInput& in, StepReport& report) {
       const double dx = in.dt * vx, dy = in.dt * vy;  // Eq. (29)
       pts.x[p] += dx;
       pts.y[p] += dy;
-      pts.vx[p] = (pts.vx[p] + in.dt * ax) * keep;  // Eq. (30), then damping
-      pts.vy[p] = (pts.vy[p] + in.dt * ay) * keep;
+      const double ux = pts.vx[p] + in.dt * ax, uy = pts.vy[p] + in.dt * ay;  // Eq. (30)
+      pts.vx[p] = ux * keep;  // damping of the gravity stage
+      pts.vy[p] = uy * keep;
       const double m = pts.mass[p];
       const double v2 = pts.vx[p] * pts.vx[p] + pts.vy[p] * pts.vy[p];
+      damped += 0.5 * m * (ux * ux + uy * uy - v2);
       work += m * (in.gravity[0] * dx + in.gravity[1] * dy);
       kinetic += 0.5 * m * v2;
       moving += 0.5 * m * (vx * vx + vy * vy);
       signal = std::max(signal, w.materials[pts.material[p]].wave_speed + std::sqrt(v2));
     }
-    w.chunk_sums[4 * c] = work;
-    w.chunk_sums[4 * c + 1] = kinetic;
-    w.chunk_sums[4 * c + 2] = moving;
-    w.chunk_sums[4 * c + 3] = signal;
+    double* sums = &w.chunk_sums[5 * static_cast<std::size_t>(c)];
+    sums[0] = work;
+    sums[1] = kinetic;
+    sums[2] = moving;
+    sums[3] = damped;
+    sums[4] = signal;
   }
-  report = StepReport{};
   for (int c = 0; c < chunks; ++c) {
-    report.gravity_work += w.chunk_sums[4 * c];
-    report.kinetic_energy += w.chunk_sums[4 * c + 1];
-    report.moving_kinetic_energy += w.chunk_sums[4 * c + 2];
-    report.max_signal = std::max(report.max_signal, w.chunk_sums[4 * c + 3]);
+    const double* sums = &w.chunk_sums[5 * static_cast<std::size_t>(c)];
+    report.gravity_work += sums[0];
+    report.kinetic_energy += sums[1];
+    report.moving_kinetic_energy += sums[2];
+    report.damping_loss += sums[3];
+    report.max_signal = std::max(report.max_signal, sums[4]);
   }
 }
 

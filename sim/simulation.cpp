@@ -94,6 +94,17 @@ bool Simulation::at_rest(const StageSpec& stage, const StageResult& r) const {
   return r.moving_kinetic_energy <= stage.rest.kinetic_ratio * std::max(r.gravity_work, 0.0);
 }
 
+void Simulation::close_energy_balance(StageResult& r, double kinetic_start,
+                                      double elastic_start) const {
+  EnergyBalance& e = r.energy;
+  e.external_work = r.gravity_work;
+  e.kinetic_change = kinetic_energy(world_) - kinetic_start;
+  e.elastic_energy_change = elastic_energy(world_) - elastic_start;
+  e.plastic_dissipation = e.internal_work - e.elastic_energy_change;
+  const double residual = e.external_work - e.kinetic_change - e.internal_work - e.damping_loss - e.wall_loss;
+  e.relative_error = e.external_work != 0 ? residual / std::fabs(e.external_work) : 0.0;
+}
+
 void Simulation::run_timed_stage(const StageSpec& stage, Observer& observer) {
   const auto wall_start = std::chrono::steady_clock::now();
   StageResult r;
@@ -109,6 +120,7 @@ void Simulation::run_timed_stage(const StageSpec& stage, Observer& observer) {
   const double interval = scenario_.output.frame_interval;
   long next_frame = 0;  // frame k falls at stage time k * interval
   double max_signal = max_signal_speed(world_);
+  const double kinetic_start = kinetic_energy(world_), elastic_start = elastic_energy(world_);
   StepReport report;
   while (true) {
     if (painted && next_frame * interval <= stage_time_ + kEventSlack * interval) {
@@ -130,6 +142,9 @@ void Simulation::run_timed_stage(const StageSpec& stage, Observer& observer) {
     time_ += dt;
     ++r.steps;
     r.gravity_work += report.gravity_work;
+    r.energy.internal_work += report.internal_work;
+    r.energy.damping_loss += report.damping_loss;
+    r.energy.wall_loss += report.wall_loss;
     r.kinetic_energy = report.kinetic_energy;
     r.moving_kinetic_energy = report.moving_kinetic_energy;
     max_signal = report.max_signal;
@@ -139,6 +154,8 @@ void Simulation::run_timed_stage(const StageSpec& stage, Observer& observer) {
   if (painted && (next_frame - 1) * interval < stage_time_ - kEventSlack * interval)
     observer.frame(*this, stage, frames_++);  // the stage ended between frame times
   r.simulated_time = stage_time_;
+  close_energy_balance(r, kinetic_start, elastic_start);
+  r.metrics = measure_stage(world_);
   r.wall_time = seconds_since(wall_start);
   results_.push_back(r);
   observer.stage_ends(*this, stage, results_.back());

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "sim/diagnostics.hpp"
 #include "sim/scenario.hpp"
 #include "sim/step.hpp"
 #include "sim/world.hpp"
@@ -22,6 +23,8 @@ struct StageResult {
   double kinetic_energy = 0;   // of the points at the end, J/m
   double moving_kinetic_energy = 0;  // of the velocity that moves the points (the rest criterion)
   double gravity_work = 0;     // during the stage, J/m
+  EnergyBalance energy;        // Eq. (3) over the stage
+  StageMetrics metrics;        // at the end of the stage
 };
 
 class Simulation;
@@ -58,6 +61,7 @@ class Simulation {
   void run_timed_stage(const StageSpec& stage, Observer& observer);
   void change_materials(const StageSpec& stage);
   double choose_time_step(double max_signal) const;
+  void close_energy_balance(StageResult& r, double kinetic_start, double elastic_start) const;
   double stage_gravity_factor(const StageSpec& stage, double t) const;
   bool at_rest(const StageSpec& stage, const StageResult& r) const;
 

@@ -13,8 +13,9 @@ void step(World& w, const StepInput& in, StepReport& report) {
   locate_points(w);
   reset_grid(w.grid);
   points_to_grid(w);
-  enforce_walls_on_momentum(w.grid);
-  update_stress(w, in.dt);
+  report = StepReport{};
+  report.wall_loss = enforce_walls_on_momentum(w.grid);
+  report.internal_work = update_stress(w, in.dt);
   grid_forces(w, in.gravity);
   update_nodal_momentum(w.grid, in.dt);
   grid_to_points(w, in, report);
@@ -141,20 +142,27 @@ void points_to_grid(World& w) {
 // with the step's acceleration: with the incremental update of Eq. (30) a
 // point would otherwise keep the speed a no-slip wall stopped, and a deposit
 // against a wall would never come to rest.
-void enforce_walls_on_momentum(Grid& g) {
+double enforce_walls_on_momentum(Grid& g) {
+  g.row_sums.assign(static_cast<std::size_t>(g.j_end - g.j_begin), 0.0);
 #pragma omp parallel for schedule(static)
   for (int j = g.j_begin; j < g.j_end; ++j) {
+    double removed = 0;
     for (int i = g.i_begin; i < g.i_end; ++i) {
       const int k = g.node(i, j);
       const double inv = g.mass[k] > 0.0 ? 1.0 / g.mass[k] : 0.0;
       g.ax[k] = g.fix_x[k] ? -g.px[k] * inv : 0.0;
       g.ay[k] = g.fix_y[k] ? -g.py[k] * inv : 0.0;
+      removed -= 0.5 * (g.px[k] * g.ax[k] + g.py[k] * g.ay[k]);
       if (g.fix_x[k]) g.px[k] = 0.0;
       if (g.fix_y[k]) g.py[k] = 0.0;
       g.vx[k] = g.px[k] * inv;
       g.vy[k] = g.py[k] * inv;
     }
+    g.row_sums[j - g.j_begin] = removed;
   }
+  double removed = 0;  // row by row, in a fixed order
+  for (const double row : g.row_sums) removed += row;
+  return removed;
 }
 
 void grid_forces(World& w, const Vec2& gravity) {

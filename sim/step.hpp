@@ -21,6 +21,9 @@ struct StepReport {
   // Point velocities (Eq. 30) can keep a part the grid cannot see, a null
   // space of the incremental update, so rest is judged on this one.
   double moving_kinetic_energy = 0;
+  double internal_work = 0;   // sum_p V_p sigma : d eps over the step (Eq. 3), J/m
+  double damping_loss = 0;    // kinetic energy the damping took, J/m
+  double wall_loss = 0;       // kinetic energy the walls took from the grid, J/m
   double max_signal = 0;      // max_p (c_p + |v_p|), m/s, for the next stable step
 };
 
@@ -30,8 +33,8 @@ void step(World& world, const StepInput& input, StepReport& report);
 void locate_points(World& world);          // GIMP stencils, Eqs. (12), (13)
 void reset_grid(Grid& grid);
 void points_to_grid(World& world);         // nodal mass and momentum, Eqs. (26), (27)
-void enforce_walls_on_momentum(Grid& grid);
-void update_stress(World& world, double dt);   // Eqs. (31), (24), (21)-(23), (25)
+double enforce_walls_on_momentum(Grid& grid);  // returns the kinetic energy taken
+double update_stress(World& world, double dt);  // Eqs. (31), (24), (21)-(23), (25); returns stress work
 void grid_forces(World& world, const Vec2& gravity);  // Eqs. (16), (17)
 void update_nodal_momentum(Grid& grid, double dt);    // Eq. (28)
 void grid_to_points(World& world, const StepInput& input, StepReport& report);  // Eqs. (29), (30)

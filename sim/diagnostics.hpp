@@ -1,0 +1,53 @@
+// What a stage did, measured on the points at its end: how far the soil went,
+// whether it stayed together, how steep the deposit is, and the energy
+// balance of the paper's Eq. (3). Soil means points of Mohr-Coulomb
+// materials; the rest (the house) is reported per material.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "sim/world.hpp"
+
+namespace sim {
+
+// Energy of Eq. (3) over a stage, J per metre of thickness. The balance:
+// external_work = kinetic_change + internal_work + damping_loss + wall_loss, where the
+// internal (stress) work splits into elastic_energy_change + plastic_dissipation.
+struct EnergyBalance {
+  double external_work = 0;          // by gravity
+  double kinetic_change = 0;         // of the points
+  double internal_work = 0;          // sum over steps of V sigma : d eps
+  double elastic_energy_change = 0;  // stored strain energy, end minus start
+  double plastic_dissipation = 0;    // internal_work - elastic_energy_change
+  double damping_loss = 0;           // taken by v := v / (1 + theta)
+  double wall_loss = 0;              // taken by no-slip and roller walls (inelastic contact)
+  double relative_error = 0;         // (external - kinetic - internal - damping - wall) / |external|
+};
+
+struct MaterialMotion {
+  std::string material;
+  double mean_ux = 0, mean_uy = 0;  // mean displacement from the initial positions, m
+  double max_displacement = 0;      // largest |u|, m
+};
+
+struct StageMetrics {
+  double max_soil_ux = 0;       // largest |x - x0| of soil, m
+  double initial_front = 0;     // largest x of soil before any load, m
+  double front = 0;             // largest x of the main soil body now, m
+  double runout = 0;            // front - initial_front, m
+  double main_body_fraction = 1;  // soil points in the largest connected group of cells
+  double yielding_fraction = 0;   // soil points that yielded in the last step
+  double deposit_slope_deg = 0;   // NaN where no slope can be fitted (see .cpp)
+  std::vector<MaterialMotion> materials;
+};
+
+StageMetrics measure_stage(const World& world);
+
+// Kinetic energy of the points, sum m |v|^2 / 2, J/m.
+double kinetic_energy(const World& world);
+
+// Strain energy stored in the points, sum V sigma : C^-1 : sigma / 2, J/m.
+double elastic_energy(const World& world);
+
+}  // namespace sim
