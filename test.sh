@@ -3,4 +3,6 @@
 set -euo pipefail
 cd "$(dirname "$0")"
 scripts/setup.sh
-ctest --test-dir build --output-on-failure --parallel "$(nproc)" --timeout 900
+# ctest runs one test per core; one OpenMP thread each keeps the cores from
+# being oversubscribed (tests that need two threads ask for them).
+OMP_NUM_THREADS=1 ctest --test-dir build --output-on-failure --parallel "$(nproc)" --timeout 900
