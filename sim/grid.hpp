@@ -19,6 +19,9 @@ struct Grid {
   // Per node, indexed j * nx + i: mass and momentum (Eqs. 26, 27), velocity
   // p/m, force (Eqs. 16, 17) and acceleration f/m.
   std::vector<double> mass, px, py, vx, vy, fx, fy, ax, ay;
+  // Points whose weight on the node is positive: a point alone on all its
+  // nodes is a free body (see update_stress).
+  std::vector<int> points;
   // Velocity components held at zero by the walls (1 = fixed).
   std::vector<std::uint8_t> fix_x, fix_y;
 

@@ -114,6 +114,7 @@ void reset_grid(Grid& g) {
     for (int i = g.i_begin; i < g.i_end; ++i) {
       const int k = g.node(i, j);
       g.mass[k] = g.px[k] = g.py[k] = g.fx[k] = g.fy[k] = 0.0;
+      g.points[k] = 0;
     }
   }
 }
@@ -131,6 +132,7 @@ void points_to_grid(World& w) {
         g.mass[row + a] += S * m;              // Eq. (26)
         g.px[row + a] += S * mvx;              // Eq. (27)
         g.py[row + a] += S * mvy;
+        g.points[row + a] += S > 0.0;
       }
     }
   });
