@@ -16,6 +16,7 @@ OutputSpec parse_output(const scenario_json::Node& node, const std::vector<Stage
 // kMaxPoints points and kMaxGridNodes grid nodes.
 constexpr double kMaxPoints = 20e6;
 constexpr double kMaxGridNodes = 50e6;
+constexpr double kMaxFrames = 100000;  // per stage
 void check_memory_budget_of_grid(const scenario_json::Node& root, const Scenario& s);
 void check_memory_budget_of_points(const scenario_json::Node& root, const Scenario& s);
 

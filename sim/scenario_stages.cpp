@@ -113,7 +113,16 @@ OutputSpec parse_output(const Node& node, const std::vector<StageSpec>& stages) 
   require_object(node, {"frame_interval", "frame_stages", "fields", "colour_map",
                         "displacement_reference", "vtk", "image_size"});
   OutputSpec o;
-  if (node.has("frame_interval")) o.frame_interval = non_negative(node.at("frame_interval"));
+  if (node.has("frame_interval")) {
+    o.frame_interval = non_negative(node.at("frame_interval"));
+    // At most kMaxFrames frames per stage, so a tiny interval cannot stall a run.
+    double longest = 0;
+    for (const StageSpec& s : stages) longest = std::max(longest, s.duration);
+    if (o.frame_interval > 0 && longest / o.frame_interval > kMaxFrames)
+      fail(node.at("frame_interval"), "0 (no frames) or at least the longest stage / " +
+                                          std::to_string(static_cast<long>(kMaxFrames)) +
+                                          " s (at most that many frames per stage)");
+  }
   if (node.has("frame_stages")) {
     const Node list = node.at("frame_stages");
     if (!list.value.is_array()) fail(list, "an array of stage names");

@@ -1,6 +1,7 @@
 #include "sim/seed.hpp"
 
 #include <cmath>
+#include <sstream>
 
 #include "sim/scenario_geometry.hpp"
 
@@ -21,12 +22,15 @@ World make_world(const Scenario& s) {
   const long rows = std::lround(std::ceil((s.domain_max[1] - s.domain_min[1]) / spacing));
   const double volume = spacing * spacing;  // per unit thickness (plane strain)
   Particles& pts = w.points;
+  std::vector<std::size_t> seeded(s.bodies.size(), 0);
   for (long r = 0; r < rows; ++r) {
     for (long c = 0; c < cols; ++c) {
       const Vec2 centre{s.domain_min[0] + (c + 0.5) * spacing,
                         s.domain_min[1] + (r + 0.5) * spacing};
-      for (const BodySpec& body : s.bodies) {
+      for (std::size_t b = 0; b < s.bodies.size(); ++b) {
+        const BodySpec& body = s.bodies[b];
         if (!point_in_polygon(body.polygon, centre)) continue;
+        ++seeded[b];
         const MaterialSpec& m = s.materials[body.material];
         pts.x.push_back(centre[0]);
         pts.y.push_back(centre[1]);
@@ -36,6 +40,17 @@ World make_world(const Scenario& s) {
         break;
       }
     }
+  }
+  // A body with no point would silently vanish from the run.
+  for (std::size_t b = 0; b < s.bodies.size(); ++b) {
+    if (seeded[b] > 0) continue;
+    std::ostringstream msg;
+    msg << s.source_path << ": bodies[" << b << "] (" << s.bodies[b].name
+        << "): no point falls inside it (point spacing " << spacing
+        << " m = grid.cell_size / grid.points_per_cell, or an earlier body of the same "
+           "material already holds its points): expected a body holding at least one "
+           "sub-cell centre";
+    throw ScenarioError(msg.str());
   }
   const std::size_t n = pts.x.size();
   for (auto* v : {&pts.vx, &pts.vy, &pts.sxx, &pts.syy, &pts.sxy, &pts.szz}) v->assign(n, 0.0);
