@@ -2,7 +2,10 @@
 // 0 done, 2 bad input (nothing written), 1 the run failed.
 #pragma once
 
+#include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace app {
 
@@ -18,5 +21,31 @@ struct RunOptions {
 
 int run_command(const RunOptions& options);
 int check_command(const std::string& scenario);
+
+// `landslide render`: re-paints saved VTK states without simulating.
+struct RenderOptions {
+  std::string input;     // a .vtu file, or a run directory (DIR/vtk/points.pvd) or its vtk/
+  std::string scenario;  // the scenario of the run: materials, domain, image size, name
+  std::string field;     // one of field_names()
+  std::string colour_map;                          // "" : the scenario's
+  std::optional<std::pair<double, double>> range;  // none: per stage, as the run does
+  std::string out;  // a .png file (one state) or a directory; "" : see README
+  bool video = false;  // also encode OUT/<field>.mp4 and .gif
+};
+int render_command(const RenderOptions& options);
+
+// `landslide panel`: several PNGs with captions on one page.
+struct PanelOptions {
+  std::string out;  // .png
+  std::string title;
+  int cols = 2;
+  std::vector<std::string> items;  // IMAGE CAPTION IMAGE CAPTION ...
+};
+int panel_command(const PanelOptions& options);
+
+// The panel itself, for the gallery: images (row-major) with one caption
+// each, `cols` per row, written atomically to `out`. Throws render::Error.
+void write_panel(const std::vector<std::string>& images, const std::vector<std::string>& captions,
+                 int cols, const std::string& title, const std::string& out);
 
 }  // namespace app

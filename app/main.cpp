@@ -1,4 +1,5 @@
-// landslide: simulate a scenario, check one, (and paint it, as the painter lands).
+// landslide: simulate a scenario (and paint it), check one, re-paint saved
+// states, compose a panel of frames.
 #include <CLI/CLI.hpp>
 
 #include "app/commands.hpp"
@@ -19,6 +20,37 @@ int main(int argc, char** argv) {
   CLI::App* check_cmd = cli.add_subcommand("check", "Validate a scenario; write nothing");
   check_cmd->add_option("scenario", check_path, "Scenario JSON file")->required();
 
+  app::RenderOptions render;
+  std::vector<double> range;
+  CLI::App* render_cmd =
+      cli.add_subcommand("render", "Re-paint saved VTK states without simulating");
+  render_cmd->add_option("input", render.input, "A .vtu file, or a run directory (DIR/vtk/points.pvd)")
+      ->required();
+  render_cmd->add_option("--scenario", render.scenario, "The run's scenario JSON file")
+      ->required();
+  render_cmd->add_option("--field", render.field,
+                         "displacement-x | displacement-y | relative-yield | stress-yy | "
+                         "velocity | material")
+      ->required();
+  render_cmd->add_option("--colour-map", render.colour_map,
+                         "jet | viridis (default: the scenario's)");
+  render_cmd->add_option("--range", range, "Fixed colour range LO HI (default: per stage)")
+      ->expected(2);
+  render_cmd->add_option("--out", render.out,
+                         "PNG file (one state) or directory (default: DIR/render/FIELD/, or "
+                         "STATE-FIELD.png beside a .vtu)");
+  render_cmd->add_flag("--video", render.video, "Also encode OUT/FIELD.mp4 and OUT/FIELD.gif");
+
+  app::PanelOptions panel;
+  CLI::App* panel_cmd =
+      cli.add_subcommand("panel", "Compose PNGs with captions into one rows x cols page");
+  panel_cmd->add_option("out", panel.out, "Output .png")->required();
+  panel_cmd->add_option("items", panel.items, "IMAGE.png CAPTION [IMAGE.png CAPTION ...]")
+      ->required();
+  panel_cmd->add_option("--title", panel.title, "Title above the panel");
+  panel_cmd->add_option("--cols", panel.cols, "Images per row (default 2)")
+      ->check(CLI::Range(1, 64));
+
   try {
     cli.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -27,5 +59,10 @@ int main(int argc, char** argv) {
   }
   if (*run_cmd) return app::run_command(run);
   if (*check_cmd) return app::check_command(check_path);
+  if (*render_cmd) {
+    if (range.size() == 2) render.range = std::make_pair(range[0], range[1]);
+    return app::render_command(render);
+  }
+  if (*panel_cmd) return app::panel_command(panel);
   return app::kExitBadInput;
 }

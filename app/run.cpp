@@ -2,6 +2,7 @@
 // anything is written, then hand the time loop to sim::Simulation and listen.
 #include <omp.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -10,11 +11,14 @@
 #include <sstream>
 
 #include "app/commands.hpp"
+#include "app/frames.hpp"
 #include "app/progress.hpp"
 #include "app/summary.hpp"
 #include "sim/atomic_file.hpp"
 #include "sim/simulation.hpp"
 #include "sim/vtk.hpp"
+#include "render/error.hpp"
+#include "render/video.hpp"
 
 namespace app {
 
@@ -25,18 +29,26 @@ namespace {
 // Writes what the scenario asks for while the simulation runs.
 class RunObserver : public sim::Observer {
  public:
-  RunObserver(fs::path out, int threads) : out_(std::move(out)), threads_(threads) {}
+  // `recorder` is null when the scenario paints nothing.
+  RunObserver(const sim::Scenario& scenario, fs::path out, int threads,
+              std::unique_ptr<FrameRecorder> recorder)
+      : out_(std::move(out)), threads_(threads), recorder_(std::move(recorder)) {
+    for (const sim::StageSpec& s : scenario.stages)
+      if (s.type != sim::StageType::MaterialChange && paints(scenario, s))
+        last_painted_stage_ = s.name;
+  }
 
   void stage_begins(const sim::Simulation&, const sim::StageSpec& stage) override {
     stage_start_ = std::chrono::steady_clock::now();
     progress_.update(stage.name, 0, stage.duration, 0);
   }
 
-  void frame(const sim::Simulation& sim, const sim::StageSpec&, int frame) override {
+  void frame(const sim::Simulation& sim, const sim::StageSpec& stage, int frame) override {
+    if (recorder_) recorder_->capture(sim.world(), sim.stage_time(), frame, stage.name);
     if (sim.scenario().output.vtk == "frames") {
       char name[32];
       std::snprintf(name, sizeof name, "frame-%06d.vtu", frame);
-      write_state(sim, name);
+      write_state(sim, stage, name, frame);
     }
   }
 
@@ -47,7 +59,7 @@ class RunObserver : public sim::Observer {
   void stage_ends(const sim::Simulation& sim, const sim::StageSpec& stage,
                   const sim::StageResult& r) override {
     if (stage.type != sim::StageType::MaterialChange && sim.scenario().output.vtk == "stage-end")
-      write_state(sim, stage.name + "-end.vtu");
+      write_state(sim, stage, stage.name + "-end.vtu", -1);
     std::ostringstream msg;
     msg << stage.name << ": done";
     if (stage.type != sim::StageType::MaterialChange) {
@@ -56,7 +68,29 @@ class RunObserver : public sim::Observer {
           << r.kinetic_energy << " J/m";
     }
     progress_.finish(msg.str());
+    if (recorder_ && recorder_->pending() > 0) paint(stage.name);
+    if (recorder_ && stage.name == last_painted_stage_) encode();
     write_summary(sim, "running");
+  }
+
+  // After a failed stage: paint what was captured before the failure, and
+  // the videos, so the frames leading up to it can be looked at.
+  void paint_after_failure(const std::string& stage) {
+    if (!recorder_) return;
+    try {
+      if (recorder_->pending() > 0) paint(stage);
+      encode();
+    } catch (const std::exception& e) {
+      std::cerr << "error: painting the frames before the failure: " << e.what() << '\n';
+    }
+  }
+
+  void report_outputs() const {
+    if (!recorder_) return;
+    for (const Field f : recorder_->fields())
+      std::cerr << "frames: " << recorder_->frames_dir(f).string() << "/\n";
+    for (const render::VideoFiles& v : videos_)
+      std::cerr << "video: " << v.mp4 << (v.gif.empty() ? "" : ", " + v.gif) << '\n';
   }
 
   void write_summary(const sim::Simulation& sim, const std::string& status) {
@@ -68,11 +102,49 @@ class RunObserver : public sim::Observer {
   }
 
  private:
-  void write_state(const sim::Simulation& sim, const std::string& name) {
+  static bool paints(const sim::Scenario& s, const sim::StageSpec& stage) {
+    const auto& names = s.output.frame_stages;
+    return s.output.frame_interval > 0 &&
+           std::find(names.begin(), names.end(), stage.name) != names.end();
+  }
+
+  void paint(const std::string& stage) {
+    const auto start = std::chrono::steady_clock::now();
+    const std::size_t frames = recorder_->pending();
+    const int files = recorder_->paint_pending();
+    std::cerr << stage << ": painted " << frames << " frames, " << files << " PNG files in "
+              << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()
+              << " s\n";
+  }
+
+  void encode() {
+    const auto start = std::chrono::steady_clock::now();
+    videos_ = recorder_->encode_videos();
+    if (!videos_.empty())
+      std::cerr << "encoded " << videos_.size() << " videos in "
+                << std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
+                       .count()
+                << " s\n";
+  }
+
+  // The .vtu file, the .pvd collection, and vtk/states.json: which stage each
+  // state belongs to and its time within the stage, so `landslide render`
+  // can label and colour it as the run did.
+  void write_state(const sim::Simulation& sim, const sim::StageSpec& stage,
+                   const std::string& name, int frame) {
     fs::create_directories(out_ / "vtk");
     sim::write_vtu((out_ / "vtk" / name).string(), sim.world(), sim.time());
     vtk_files_.emplace_back(sim.time(), name);
     sim::write_pvd((out_ / "vtk" / "points.pvd").string(), vtk_files_);
+    nlohmann::json entry = {{"file", name},
+                            {"time_s", sim.time()},
+                            {"stage", stage.name},
+                            {"stage_time_s", sim.stage_time()}};
+    entry["frame"] = frame >= 0 ? nlohmann::json(frame) : nlohmann::json(nullptr);
+    states_.push_back(entry);
+    const nlohmann::json doc = {{"states", states_}};
+    sim::write_file_atomically((out_ / "vtk" / "states.json").string(),
+                               [&](std::ostream& o) { o << doc.dump(1) << '\n'; });
   }
 
   fs::path out_;
@@ -81,6 +153,10 @@ class RunObserver : public sim::Observer {
   std::chrono::steady_clock::time_point run_start_ = std::chrono::steady_clock::now();
   std::chrono::steady_clock::time_point stage_start_;
   std::vector<std::pair<double, std::string>> vtk_files_;
+  nlohmann::json states_ = nlohmann::json::array();
+  std::unique_ptr<FrameRecorder> recorder_;
+  std::string last_painted_stage_;
+  std::vector<render::VideoFiles> videos_;
 };
 
 }  // namespace
@@ -108,6 +184,25 @@ int run_command(const RunOptions& options) {
   if (options.threads > 0) omp_set_num_threads(options.threads);
   const int threads = omp_get_max_threads();
   const fs::path out(options.out_dir);
+  // Painting is set up before anything runs or is written: a missing ffmpeg
+  // or OSMesa must not show up after hours of simulation.
+  std::unique_ptr<FrameRecorder> recorder;
+  if (paints_frames(scenario)) {
+    std::string why;
+    if (!render::ffmpeg_available(&why)) {
+      std::cerr << "error: " << options.scenario
+                << " asks for painted frames (output.frame_interval > 0), which are encoded "
+                   "into mp4 and gif by ffmpeg: "
+                << why << '\n';
+      return kExitBadInput;
+    }
+    try {
+      recorder = std::make_unique<FrameRecorder>(scenario, out);
+    } catch (const std::exception& e) {
+      std::cerr << "error: cannot set up the off-screen painter: " << e.what() << '\n';
+      return kExitBadInput;
+    }
+  }
   std::unique_ptr<sim::Simulation> simulation;
   std::unique_ptr<RunObserver> observer;
   try {
@@ -116,14 +211,21 @@ int run_command(const RunOptions& options) {
     std::cerr << "landslide " << LANDSLIDE_VERSION << ": " << scenario.name << ", "
               << simulation->world().points.size() << " points, h = " << scenario.cell_size
               << " m, " << threads << " threads -> " << out.string() << '\n';
-    observer = std::make_unique<RunObserver>(out, threads);
+    observer = std::make_unique<RunObserver>(scenario, out, threads, std::move(recorder));
     simulation->run(*observer);
     observer->write_summary(*simulation, "finished");
   } catch (const std::exception& e) {
     std::cerr << "\nerror: " << e.what() << '\n';
-    if (observer) observer->write_summary(*simulation, std::string("failed: ") + e.what());
+    if (observer) {
+      const std::size_t done = simulation->results().size();
+      const auto& stages = simulation->scenario().stages;
+      observer->paint_after_failure(done < stages.size() ? stages[done].name : "");
+      observer->report_outputs();
+      observer->write_summary(*simulation, std::string("failed: ") + e.what());
+    }
     return kExitFailed;
   }
+  observer->report_outputs();
   std::cerr << "summary: " << (out / "summary.json").string() << '\n';
   return kExitOk;
 }

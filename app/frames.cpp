@@ -1,0 +1,433 @@
+#include "app/frames.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <regex>
+#include <stdexcept>
+
+#include "render/png_io.hpp"
+#include "sim/mohr_coulomb.hpp"
+
+namespace app {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct FieldInfo {
+  Field field;
+  const char* name;
+};
+
+constexpr FieldInfo kFields[] = {
+    {Field::DisplacementX, "displacement-x"}, {Field::DisplacementY, "displacement-y"},
+    {Field::RelativeYield, "relative-yield"}, {Field::StressYY, "stress-yy"},
+    {Field::Velocity, "velocity"},            {Field::Material, "material"},
+};
+
+// A live world: displacement from ref_x/ref_y, volume = mass / density.
+struct WorldPoints {
+  const sim::World& w;
+  std::size_t size() const { return w.points.size(); }
+  double x(std::size_t i) const { return w.points.x[i]; }
+  double y(std::size_t i) const { return w.points.y[i]; }
+  double ux(std::size_t i) const { return w.points.x[i] - w.points.ref_x[i]; }
+  double uy(std::size_t i) const { return w.points.y[i] - w.points.ref_y[i]; }
+  double vx(std::size_t i) const { return w.points.vx[i]; }
+  double vy(std::size_t i) const { return w.points.vy[i]; }
+  double syy(std::size_t i) const { return w.points.syy[i]; }
+  sim::Stress stress(std::size_t i) const {
+    const sim::Particles& p = w.points;
+    return sim::Stress{p.sxx[i], p.syy[i], p.sxy[i], p.szz[i]};
+  }
+  double volume(std::size_t i) const { return w.points.mass[i] / w.points.density[i]; }
+  int material(std::size_t i) const { return w.points.material[i]; }
+  bool yielded(std::size_t i) const { return w.points.yielded[i] != 0; }
+  const std::vector<sim::MaterialConstants>& materials() const { return w.materials; }
+};
+
+// A state read back from a .vtu file.
+struct StatePoints {
+  const sim::PointState& s;
+  const std::vector<sim::MaterialConstants>& m;
+  std::size_t size() const { return s.x.size(); }
+  double x(std::size_t i) const { return s.x[i]; }
+  double y(std::size_t i) const { return s.y[i]; }
+  double ux(std::size_t i) const { return s.ux[i]; }
+  double uy(std::size_t i) const { return s.uy[i]; }
+  double vx(std::size_t i) const { return s.vx[i]; }
+  double vy(std::size_t i) const { return s.vy[i]; }
+  double syy(std::size_t i) const { return s.syy[i]; }
+  sim::Stress stress(std::size_t i) const {
+    return sim::Stress{s.sxx[i], s.syy[i], s.sxy[i], s.szz[i]};
+  }
+  double volume(std::size_t i) const { return s.volume[i]; }
+  int material(std::size_t i) const { return s.material[i]; }
+  bool yielded(std::size_t i) const { return s.yielded[i] != 0; }
+  const std::vector<sim::MaterialConstants>& materials() const { return m; }
+};
+
+template <class P>
+std::vector<double> values_of(Field f, const P& p) {
+  const std::size_t n = p.size();
+  std::vector<double> v(n);
+  switch (f) {
+    case Field::DisplacementX:
+      for (std::size_t i = 0; i < n; ++i) v[i] = p.ux(i);
+      break;
+    case Field::DisplacementY:
+      for (std::size_t i = 0; i < n; ++i) v[i] = p.uy(i);
+      break;
+    case Field::StressYY:
+      for (std::size_t i = 0; i < n; ++i) v[i] = p.syy(i) / 1000.0;
+      break;
+    case Field::Velocity:
+      for (std::size_t i = 0; i < n; ++i) v[i] = std::hypot(p.vx(i), p.vy(i));
+      break;
+    case Field::Material:
+      for (std::size_t i = 0; i < n; ++i) v[i] = p.material(i);
+      break;
+    case Field::RelativeYield: {
+      const auto& materials = p.materials();
+      for (std::size_t i = 0; i < n; ++i) {
+        const int m = p.material(i);
+        if (m < 0 || std::size_t(m) >= materials.size()) {
+          v[i] = std::numeric_limits<double>::quiet_NaN();  // painted grey
+        } else if (p.yielded(i)) {
+          v[i] = 2.0;
+        } else if (materials[m].plastic) {
+          v[i] = sim::relative_yield(materials[m].mohr_coulomb, p.stress(i));
+        } else {
+          v[i] = 0.0;  // linear elastic: no yield surface
+        }
+      }
+      break;
+    }
+  }
+  return v;
+}
+
+template <class P>
+Frame capture(const P& p, const std::vector<Field>& fields, int number, double time,
+              const std::string& stage) {
+  Frame fr;
+  fr.number = number;
+  fr.time = time;
+  fr.stage = stage;
+  const std::size_t n = p.size();
+  fr.x.resize(n);
+  fr.y.resize(n);
+  fr.half.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    fr.x[i] = float(p.x(i));
+    fr.y[i] = float(p.y(i));
+    fr.half[i] = float(half_size(p.volume(i)));
+  }
+  fr.values.reserve(fields.size());
+  for (const Field f : fields) {
+    const std::vector<double> v = values_of(f, p);
+    fr.values.emplace_back(v.begin(), v.end());
+  }
+  return fr;
+}
+
+std::string frame_file(int number) {
+  char name[32];
+  std::snprintf(name, sizeof name, "%06d.png", number);
+  return name;
+}
+
+}  // namespace
+
+const std::vector<std::string>& field_names() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> v;
+    for (const FieldInfo& f : kFields) v.emplace_back(f.name);
+    return v;
+  }();
+  return names;
+}
+
+Field parse_field(const std::string& name) {
+  for (const FieldInfo& f : kFields)
+    if (name == f.name) return f.field;
+  std::string known;
+  for (const std::string& n : field_names()) known += (known.empty() ? "" : ", ") + n;
+  throw std::invalid_argument("unknown field '" + name + "' (expected one of: " + known + ")");
+}
+
+std::string field_name(Field f) {
+  for (const FieldInfo& i : kFields)
+    if (i.field == f) return i.name;
+  return "?";
+}
+
+FieldStyle field_style(Field f, const sim::Scenario& scenario) {
+  FieldStyle s;
+  s.field = f;
+  switch (f) {
+    case Field::DisplacementX:
+      s.title = "horizontal displacement";
+      s.label = "horizontal displacement";
+      s.unit = "m";
+      break;
+    case Field::DisplacementY:
+      s.title = "vertical displacement";
+      s.label = "vertical displacement";
+      s.unit = "m";
+      break;
+    case Field::RelativeYield:
+      s.title = "relative yield";
+      s.label = "relative yield (2 = yielding)";
+      s.fixed_range = true;
+      s.lo = 0;
+      s.hi = 2;
+      break;
+    case Field::StressYY:
+      s.title = "vertical normal stress";
+      s.label = "vertical normal stress";
+      s.unit = "kPa";
+      break;
+    case Field::Velocity:
+      s.title = "speed";
+      s.label = "speed |v|";
+      s.unit = "m/s";
+      break;
+    case Field::Material: {
+      s.title = "material";
+      std::string names;
+      for (std::size_t m = 0; m < scenario.materials.size(); ++m)
+        names += (m ? ", " : "") + std::to_string(m) + " " + scenario.materials[m].name;
+      s.label = "material: " + names;
+      s.categorical = true;
+      s.fixed_range = true;
+      s.lo = 0;
+      s.hi = std::max<double>(1, double(scenario.materials.size()) - 1);
+      break;
+    }
+  }
+  return s;
+}
+
+std::vector<double> field_values(Field f, const sim::World& world) {
+  return values_of(f, WorldPoints{world});
+}
+
+std::vector<double> field_values(Field f, const sim::PointState& state,
+                                 const std::vector<sim::MaterialConstants>& materials) {
+  return values_of(f, StatePoints{state, materials});
+}
+
+double half_size(double volume) {
+  if (!(volume > 0) || !std::isfinite(volume)) return std::numeric_limits<double>::quiet_NaN();
+  return 0.5 * std::sqrt(volume);
+}
+
+std::size_t Frame::bytes() const {
+  std::size_t b = (x.size() + y.size() + half.size()) * sizeof(float);
+  for (const auto& v : values) b += v.size() * sizeof(float);
+  return b;
+}
+
+Frame capture_frame(const sim::World& world, const std::vector<Field>& fields, int number,
+                    double time, const std::string& stage) {
+  return capture(WorldPoints{world}, fields, number, time, stage);
+}
+
+Frame capture_frame(const sim::PointState& state,
+                    const std::vector<sim::MaterialConstants>& materials,
+                    const std::vector<Field>& fields, int number, double time,
+                    const std::string& stage) {
+  for (const auto* a : {&state.y, &state.ux, &state.uy, &state.vx, &state.vy, &state.sxx,
+                        &state.syy, &state.sxy, &state.szz, &state.volume})
+    if (a->size() != state.x.size()) throw std::invalid_argument("point state arrays differ in size");
+  if (state.material.size() != state.x.size() || state.yielded.size() != state.x.size())
+    throw std::invalid_argument("point state arrays differ in size");
+  return capture(StatePoints{state, materials}, fields, number, time, stage);
+}
+
+Range field_range(const FieldStyle& style, const std::vector<Frame>& frames, std::size_t k) {
+  std::vector<const std::vector<float>*> values;
+  for (const Frame& fr : frames)
+    if (k < fr.values.size()) values.push_back(&fr.values[k]);
+  return field_range(style, values);
+}
+
+Range field_range(const FieldStyle& style, const std::vector<const std::vector<float>*>& values) {
+  if (style.fixed_range) return Range{style.lo, style.hi};
+  double lo = std::numeric_limits<double>::infinity();
+  double hi = -lo;
+  for (const std::vector<float>* array : values) {
+    for (const float v : *array) {
+      if (!std::isfinite(v)) continue;
+      lo = std::min(lo, double(v));
+      hi = std::max(hi, double(v));
+    }
+  }
+  if (!(lo <= hi)) {  // no finite value at all
+    lo = 0;
+    hi = 1;
+  }
+  if (style.field == Field::DisplacementX || style.field == Field::DisplacementY) {
+    // Keep 0 in view: a slide moving one way still shows where nothing moved.
+    lo = std::min(lo, 0.0);
+    hi = std::max(hi, 0.0);
+  } else if (style.field == Field::Velocity) {
+    lo = 0;
+  }
+  const double scale = std::max({1.0, std::fabs(lo), std::fabs(hi)});
+  if (hi - lo <= 1e-9 * scale) {
+    if (lo == 0) {
+      hi = 1;
+    } else {
+      const double mid = 0.5 * (lo + hi), half = 0.5 * scale;
+      lo = mid - half;
+      hi = mid + half;
+    }
+  }
+  return Range{lo, hi};
+}
+
+Window frame_window(const sim::Scenario& s) {
+  const double w = s.domain_max[0] - s.domain_min[0];
+  const double h = s.domain_max[1] - s.domain_min[1];
+  const double margin = std::max(0.03 * std::max(w, h), s.cell_size);
+  return Window{s.domain_min[0] - margin, s.domain_max[0] + margin, s.domain_min[1] - margin,
+                s.domain_max[1] + margin};
+}
+
+render::FrameSpec frame_spec(const sim::Scenario& scenario, const FieldStyle& style,
+                             const std::string& colour_map, const Range& range,
+                             const Frame& frame) {
+  render::FrameSpec spec;
+  spec.width = scenario.output.image_size[0];
+  spec.height = scenario.output.image_size[1];
+  const Window w = frame_window(scenario);
+  spec.world_x0 = w.x0;
+  spec.world_x1 = w.x1;
+  spec.world_y0 = w.y0;
+  spec.world_y1 = w.y1;
+  spec.colour_map = style.categorical ? "categorical" : colour_map;
+  spec.range_lo = range.lo;
+  spec.range_hi = range.hi;
+  spec.title = scenario.name + " \u2014 " + style.title;
+  if (!frame.stage.empty()) spec.title += " (" + frame.stage + ")";
+  spec.field_label = style.label;
+  spec.unit = style.unit;
+  spec.time = frame.time;
+  return spec;
+}
+
+FramePainter::FramePainter(int width, int height)
+    : painter_(std::make_unique<render::Painter>(width, height)) {}
+
+const render::Image& FramePainter::paint(const render::FrameSpec& spec, const Frame& frame,
+                                         std::size_t k) {
+  const std::size_t n = frame.x.size();
+  if (k >= frame.values.size() || frame.values[k].size() != n)
+    throw std::invalid_argument("frame has no values for field " + std::to_string(k));
+  x_.assign(frame.x.begin(), frame.x.end());
+  y_.assign(frame.y.begin(), frame.y.end());
+  half_.resize(n);
+  for (std::size_t i = 0; i < n; ++i) half_[i] = kSquareFill * double(frame.half[i]);
+  value_.assign(frame.values[k].begin(), frame.values[k].end());
+  const render::PointsView view{n, x_.data(), y_.data(), half_.data(), half_.data(),
+                                value_.data()};
+  painter_->paint_into(image_, spec, view);
+  return image_;
+}
+
+render::VideoOptions video_options(double frame_interval) {
+  render::VideoOptions o;
+  o.fps = frame_interval > 0 ? int(std::clamp(std::lround(2.0 / frame_interval), 2L, 30L)) : 25;
+  return o;
+}
+
+bool paints_frames(const sim::Scenario& s) {
+  if (!(s.output.frame_interval > 0)) return false;
+  for (const sim::StageSpec& st : s.stages) {
+    if (st.type == sim::StageType::MaterialChange) continue;
+    if (std::find(s.output.frame_stages.begin(), s.output.frame_stages.end(), st.name) !=
+        s.output.frame_stages.end())
+      return true;
+  }
+  return false;
+}
+
+std::vector<sim::MaterialConstants> materials_at_stage(const sim::Scenario& scenario,
+                                                       const std::string& stage) {
+  std::vector<sim::MaterialSpec> specs = scenario.materials;
+  for (const sim::StageSpec& st : scenario.stages) {
+    if (!stage.empty() && st.name == stage) break;
+    if (st.type != sim::StageType::MaterialChange) continue;
+    for (const sim::MaterialChange& c : st.changes)
+      sim::apply_material_change(specs[c.material], c.property, c.value);
+  }
+  std::vector<sim::MaterialConstants> out;
+  for (const sim::MaterialSpec& m : specs) out.push_back(sim::make_material_constants(m));
+  return out;
+}
+
+FrameRecorder::FrameRecorder(const sim::Scenario& scenario, fs::path out_dir)
+    : scenario_(scenario),
+      out_(std::move(out_dir)),
+      painter_(scenario.output.image_size[0], scenario.output.image_size[1]) {
+  for (const std::string& name : scenario.output.fields) {
+    fields_.push_back(parse_field(name));
+    styles_.push_back(field_style(fields_.back(), scenario));
+  }
+}
+
+fs::path FrameRecorder::frames_dir(Field f) const { return out_ / "frames" / field_name(f); }
+
+// Frames of an earlier run into the same directory would otherwise join this
+// run's video; only our own numbered files are removed.
+void FrameRecorder::clear_old_frames() {
+  static const std::regex numbered(R"(\d{6}\.png)");
+  for (const Field f : fields_) {
+    const fs::path dir = frames_dir(f);
+    fs::create_directories(dir);
+    for (const fs::directory_entry& e : fs::directory_iterator(dir))
+      if (e.is_regular_file() && std::regex_match(e.path().filename().string(), numbered))
+        fs::remove(e.path());
+  }
+  cleared_ = true;
+}
+
+void FrameRecorder::capture(const sim::World& world, double stage_time, int number,
+                            const std::string& stage) {
+  frames_.push_back(capture_frame(world, fields_, number, stage_time, stage));
+}
+
+int FrameRecorder::paint_pending() {
+  if (!cleared_) clear_old_frames();
+  int written = 0;
+  for (std::size_t k = 0; k < fields_.size(); ++k) {
+    const Range range = field_range(styles_[k], frames_, k);
+    const fs::path dir = frames_dir(fields_[k]);
+    for (const Frame& fr : frames_) {
+      const render::FrameSpec spec =
+          frame_spec(scenario_, styles_[k], scenario_.output.colour_map, range, fr);
+      render::write_png(painter_.paint(spec, fr, k), (dir / frame_file(fr.number)).string());
+      ++written;
+    }
+  }
+  frames_.clear();
+  frames_.shrink_to_fit();
+  return written;
+}
+
+std::vector<render::VideoFiles> FrameRecorder::encode_videos() {
+  std::vector<render::VideoFiles> files;
+  const render::VideoOptions options = video_options(scenario_.output.frame_interval);
+  for (const Field f : fields_) {
+    const fs::path dir = frames_dir(f);
+    if (render::count_frames(dir.string()) == 0) continue;
+    files.push_back(render::encode_video(dir.string(), out_.string(), field_name(f), options));
+  }
+  return files;
+}
+
+}  // namespace app

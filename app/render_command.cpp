@@ -1,0 +1,355 @@
+// `landslide render`: re-paints saved VTK states (one .vtu, or every state a
+// run's points.pvd lists) with the painter the run uses, without simulating.
+// `landslide panel`: several PNGs with captions on one page.
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <regex>
+#include <sstream>
+#include <stdexcept>
+
+#include <nlohmann/json.hpp>
+
+#include "app/commands.hpp"
+#include "app/frames.hpp"
+#include "render/error.hpp"
+#include "render/font.hpp"
+#include "render/panel.hpp"
+#include "render/png_io.hpp"
+#include "render/video.hpp"
+#include "sim/scenario.hpp"
+#include "sim/vtk.hpp"
+
+namespace app {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// Bad input: exit status 2, nothing written.
+class BadInput : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+bool ends_with(std::string s, const std::string& suffix) {
+  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
+  return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+std::string read_text(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  if (!in) throw BadInput(p.string() + ": cannot read");
+  std::stringstream b;
+  b << in.rdbuf();
+  return b.str();
+}
+
+// The files a .pvd collection lists, in order, relative to its folder.
+std::vector<fs::path> pvd_files(const fs::path& pvd) {
+  const std::string text = read_text(pvd);
+  static const std::regex dataset(R"re(<DataSet\b[^>]*\bfile="([^"]*)")re");
+  std::vector<fs::path> files;
+  for (auto it = std::sregex_iterator(text.begin(), text.end(), dataset);
+       it != std::sregex_iterator(); ++it)
+    files.push_back(pvd.parent_path() / (*it)[1].str());
+  if (files.empty()) throw BadInput(pvd.string() + ": lists no .vtu files");
+  return files;
+}
+
+// What the run knew about a state and the .vtu file does not hold.
+struct StateInfo {
+  bool known = false;
+  std::string stage;
+  double stage_time = 0;
+};
+
+// vtk/states.json, written by `landslide run` beside its .vtu files.
+std::map<std::string, StateInfo> read_states_json(const fs::path& dir) {
+  std::map<std::string, StateInfo> out;
+  const fs::path p = dir / "states.json";
+  if (!fs::is_regular_file(p)) return out;
+  try {
+    const nlohmann::json doc = nlohmann::json::parse(read_text(p));
+    for (const nlohmann::json& s : doc.at("states")) {
+      StateInfo info;
+      info.known = true;
+      info.stage = s.at("stage").get<std::string>();
+      info.stage_time = s.at("stage_time_s").get<double>();
+      out[s.at("file").get<std::string>()] = info;
+    }
+  } catch (const nlohmann::json::exception& e) {
+    throw BadInput(p.string() + ": " + e.what());
+  }
+  return out;
+}
+
+// Removes earlier numbered frames (000000.png ...) so a video of the folder
+// holds only this rendering.
+void clear_numbered_frames(const fs::path& dir) {
+  static const std::regex numbered(R"(\d{6}\.png)");
+  for (const fs::directory_entry& e : fs::directory_iterator(dir))
+    if (e.is_regular_file() && std::regex_match(e.path().filename().string(), numbered))
+      fs::remove(e.path());
+}
+
+std::string numbered(int i) {
+  char name[32];
+  std::snprintf(name, sizeof name, "%06d.png", i);
+  return name;
+}
+
+struct Job {
+  sim::Scenario scenario;
+  Field field = Field::DisplacementX;
+  std::string colour_map;
+  std::vector<fs::path> files;
+  fs::path out;
+  bool out_is_file = false;
+};
+
+Job prepare(const RenderOptions& o) {
+  Job job;
+  try {
+    job.scenario = sim::load_scenario(o.scenario);
+  } catch (const sim::ScenarioError& e) {
+    throw BadInput(e.what());
+  }
+  try {
+    job.field = parse_field(o.field);
+  } catch (const std::invalid_argument& e) {
+    throw BadInput(std::string("--field: ") + e.what());
+  }
+  job.colour_map = o.colour_map.empty() ? job.scenario.output.colour_map : o.colour_map;
+  if (job.colour_map != "jet" && job.colour_map != "viridis")
+    throw BadInput("--colour-map " + job.colour_map + ": expected jet or viridis");
+  if (o.range) {
+    const auto [lo, hi] = *o.range;
+    if (!std::isfinite(lo) || !std::isfinite(hi) || !(lo < hi))
+      throw BadInput("--range " + std::to_string(lo) + " " + std::to_string(hi) +
+                     ": expected two finite numbers LO < HI");
+  }
+
+  const fs::path in(o.input);
+  std::error_code ec;
+  if (fs::is_directory(in, ec)) {
+    fs::path pvd;
+    for (const fs::path& c : {in / "vtk" / "points.pvd", in / "points.pvd"})
+      if (fs::is_regular_file(c, ec)) {
+        pvd = c;
+        break;
+      }
+    if (pvd.empty())
+      throw BadInput(in.string() + ": a directory without vtk/points.pvd (was the run's "
+                     "output.vtk \"none\"?)");
+    job.files = pvd_files(pvd);
+    const fs::path vtk_dir = pvd.parent_path();
+    const fs::path base = vtk_dir.filename() == "vtk" ? vtk_dir.parent_path() : vtk_dir;
+    job.out = o.out.empty() ? base / "render" / field_name(job.field) : fs::path(o.out);
+  } else if (fs::is_regular_file(in, ec)) {
+    if (!ends_with(in.string(), ".vtu"))
+      throw BadInput(in.string() + ": expected a .vtu file or a run directory");
+    job.files = {in};
+    job.out = o.out.empty()
+                  ? in.parent_path() / (in.stem().string() + "-" + field_name(job.field) + ".png")
+                  : fs::path(o.out);
+  } else {
+    throw BadInput(in.string() + ": no such file or directory");
+  }
+  for (const fs::path& f : job.files)
+    if (!fs::is_regular_file(f, ec)) throw BadInput(f.string() + ": listed but missing");
+
+  job.out_is_file = ends_with(job.out.string(), ".png");
+  if (job.out_is_file && job.files.size() != 1)
+    throw BadInput("--out " + job.out.string() + ": one PNG file, but there are " +
+                   std::to_string(job.files.size()) + " states; give a directory");
+  if (job.out_is_file && o.video) throw BadInput("--video needs a directory for --out");
+  if (!job.out_is_file && fs::exists(job.out, ec) && !fs::is_directory(job.out, ec))
+    throw BadInput("--out " + job.out.string() + ": exists and is not a directory");
+  if (o.video) {
+    std::string why;
+    if (!render::ffmpeg_available(&why)) throw BadInput("--video: " + why);
+  }
+  return job;
+}
+
+// Reads every state into a frame of the one field (float32, as the run keeps it).
+std::vector<Frame> load_frames(const Job& job) {
+  const std::vector<Field> fields{job.field};
+  std::map<fs::path, std::map<std::string, StateInfo>> infos;  // per folder
+  std::map<std::string, std::vector<sim::MaterialConstants>> materials;  // per stage
+  std::vector<Frame> frames;
+  bool unknown_stage = false;
+  for (std::size_t i = 0; i < job.files.size(); ++i) {
+    const fs::path& file = job.files[i];
+    const fs::path dir = file.parent_path();
+    if (!infos.count(dir)) infos[dir] = read_states_json(dir);
+    const auto it = infos[dir].find(file.filename().string());
+    const StateInfo info = it == infos[dir].end() ? StateInfo{} : it->second;
+    unknown_stage |= !info.known;
+    // Unknown stage: the materials after every change (what a slide sees).
+    if (!materials.count(info.stage))
+      materials[info.stage] = materials_at_stage(job.scenario, info.stage);
+
+    sim::PointState state;
+    try {
+      state = sim::read_vtu(file.string());
+    } catch (const std::exception& e) {
+      throw BadInput(e.what());
+    }
+    for (const int m : state.material)
+      if (m < 0 || std::size_t(m) >= job.scenario.materials.size())
+        throw BadInput(file.string() + ": material id " + std::to_string(m) + ", but " +
+                       job.scenario.source_path + " has " +
+                       std::to_string(job.scenario.materials.size()) +
+                       " materials: is this the scenario of the run?");
+    frames.push_back(capture_frame(state, materials[info.stage], fields, int(i),
+                                   info.known ? info.stage_time : state.time, info.stage));
+  }
+  if (unknown_stage)
+    std::cerr << "note: no vtk/states.json entry for some states: their time stamps are times "
+                 "since the start of the run and their materials those after every "
+                 "material change\n";
+  if ((job.field == Field::DisplacementX || job.field == Field::DisplacementY) &&
+      job.scenario.output.displacement_reference == "stage-start")
+    std::cerr << "note: displacements are measured from the initial positions (the .vtu "
+                 "files hold no stage-start reference)\n";
+  return frames;
+}
+
+}  // namespace
+
+int render_command(const RenderOptions& o) {
+  Job job;
+  std::vector<Frame> frames;
+  try {
+    job = prepare(o);
+    frames = load_frames(job);
+  } catch (const BadInput& e) {
+    std::cerr << "error: " << e.what() << '\n';
+    return kExitBadInput;
+  }
+
+  const FieldStyle style = field_style(job.field, job.scenario);
+  // The run's colours: one range per stage (frames of one stage together).
+  std::map<std::string, Range> ranges;
+  if (o.range) {
+    for (const Frame& f : frames) ranges[f.stage] = Range{o.range->first, o.range->second};
+  } else {
+    std::map<std::string, std::vector<const std::vector<float>*>> by_stage;
+    for (const Frame& f : frames) by_stage[f.stage].push_back(&f.values[0]);
+    for (const auto& [stage, list] : by_stage) ranges[stage] = field_range(style, list);
+  }
+
+  std::unique_ptr<FramePainter> painter;
+  try {
+    painter = std::make_unique<FramePainter>(job.scenario.output.image_size[0],
+                                             job.scenario.output.image_size[1]);
+  } catch (const std::exception& e) {
+    std::cerr << "error: cannot set up the off-screen painter: " << e.what() << '\n';
+    return kExitBadInput;
+  }
+
+  try {
+    if (!job.out_is_file) {
+      fs::create_directories(job.out);
+      clear_numbered_frames(job.out);
+    } else if (job.out.has_parent_path()) {
+      fs::create_directories(job.out.parent_path());
+    }
+    for (std::size_t i = 0; i < frames.size(); ++i) {
+      const Frame& fr = frames[i];
+      const render::FrameSpec spec =
+          frame_spec(job.scenario, style, job.colour_map, ranges[fr.stage], fr);
+      const fs::path path = job.out_is_file ? job.out : job.out / numbered(int(i));
+      render::write_png(painter->paint(spec, fr, 0), path.string());
+    }
+    if (job.out_is_file) {
+      std::cout << job.out.string() << '\n';
+    } else {
+      std::cout << job.out.string() << "/: " << frames.size() << " frames\n";
+      if (o.video) {
+        const render::VideoFiles v =
+            render::encode_video(job.out.string(), job.out.string(), field_name(job.field),
+                                 video_options(job.scenario.output.frame_interval));
+        std::cout << v.mp4 << '\n' << v.gif << '\n';
+      }
+    }
+  } catch (const std::exception& e) {
+    std::cerr << "error: " << e.what() << '\n';
+    return kExitFailed;
+  }
+  return kExitOk;
+}
+
+namespace {
+
+std::vector<render::Image> read_images(const std::vector<std::string>& paths) {
+  std::vector<render::Image> images;
+  for (const std::string& p : paths) images.push_back(render::read_png(p));
+  return images;
+}
+
+render::Image compose(const std::vector<render::Image>& images,
+                      const std::vector<std::string>& captions, int cols,
+                      const std::string& title) {
+  const int n = int(images.size());
+  const int c = std::max(1, std::min(cols, n));
+  const int rows = (n + c - 1) / c;
+  render::Font font;
+  return render::compose_panel(font, images, captions, rows, c, title);
+}
+
+}  // namespace
+
+void write_panel(const std::vector<std::string>& images, const std::vector<std::string>& captions,
+                 int cols, const std::string& title, const std::string& out) {
+  render::write_png(compose(read_images(images), captions, cols, title), out);
+}
+
+int panel_command(const PanelOptions& o) {
+  if (o.items.empty() || o.items.size() % 2 != 0) {
+    std::cerr << "error: expected pairs IMAGE.png CAPTION (got " << o.items.size()
+              << " arguments)\n";
+    return kExitBadInput;
+  }
+  if (o.cols < 1) {
+    std::cerr << "error: --cols " << o.cols << ": expected at least 1\n";
+    return kExitBadInput;
+  }
+  if (!ends_with(o.out, ".png")) {
+    std::cerr << "error: " << o.out << ": the panel is written as a .png file\n";
+    return kExitBadInput;
+  }
+  std::vector<std::string> paths, captions;
+  for (std::size_t i = 0; i < o.items.size(); i += 2) {
+    paths.push_back(o.items[i]);
+    captions.push_back(o.items[i + 1]);
+  }
+  std::vector<render::Image> images;
+  render::Image page;
+  try {
+    images = read_images(paths);
+    page = compose(images, captions, o.cols, o.title);
+  } catch (const render::Error& e) {
+    std::cerr << "error: " << e.what() << '\n';
+    return kExitBadInput;
+  }
+  try {
+    const fs::path out(o.out);
+    if (out.has_parent_path()) fs::create_directories(out.parent_path());
+    render::write_png(page, o.out);
+  } catch (const std::exception& e) {
+    std::cerr << "error: " << e.what() << '\n';
+    return kExitFailed;
+  }
+  std::cout << o.out << '\n';
+  return kExitOk;
+}
+
+}  // namespace app

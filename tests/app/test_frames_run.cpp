@@ -1,0 +1,262 @@
+// End to end: a short run of a tiny scene paints numbered PNGs per field and
+// videos; `landslide render` re-paints its VTK states into the same pixels;
+// `landslide panel` composes frames; nothing half-written is left behind.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <string>
+
+#include "app/commands.hpp"
+#include "app/frames.hpp"
+#include "render/image_diff.hpp"
+#include "render/png_io.hpp"
+#include "render/video.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// A soil block resting on the floor with an elastic cap, under full gravity
+// from the start (no gravity stage): it settles and rings. Two painted
+// stages around a material change, so frame numbers continue across stages.
+const char* const kScene = R"json({
+  "name": "tiny-block",
+  "description": "App test: a Mohr-Coulomb block and an elastic cap settling.",
+  "domain": {"min": [0, 0], "max": [4, 3]},
+  "grid": {"cell_size": 0.5, "padding_cells": 2, "points_per_cell": 2},
+  "gravity": [0, -9.81],
+  "boundaries": {"left": "roller", "right": "roller", "bottom": "fixed", "top": "free"},
+  "materials": {
+    "block": {"model": "mohr-coulomb", "density": 2000, "youngs_modulus": 2e7,
+              "poisson_ratio": 0.25, "cohesion": 5000, "friction_angle": 30,
+              "dilation_angle": 0},
+    "cap": {"model": "linear-elastic", "density": 500, "youngs_modulus": 2e7,
+            "poisson_ratio": 0.25}
+  },
+  "bodies": [
+    {"name": "block", "material": "block", "rectangle": {"min": [1, 0], "max": [3, 1]}},
+    {"name": "cap", "material": "cap", "rectangle": {"min": [1.5, 1], "max": [2.5, 1.5]}}
+  ],
+  "time_step": {"courant": 0.5},
+  "stages": [
+    {"name": "settle", "type": "dynamic", "duration": 0.2},
+    {"name": "soften", "type": "material-change", "material": "block", "set": {"cohesion": 0}},
+    {"name": "slump", "type": "dynamic", "duration": 0.1}
+  ],
+  "output": {"frame_interval": 0.05, "frame_stages": ["settle", "slump"],
+             "fields": ["displacement-y", "relative-yield", "velocity", "material"],
+             "colour_map": "viridis", "vtk": "frames", "image_size": [320, 180]}
+})json";
+
+const std::vector<std::string> kFields = {"displacement-y", "relative-yield", "velocity",
+                                          "material"};
+constexpr int kFrames = 5 + 3;  // settle: 0 .. 0.2 s, slump: 0 .. 0.1 s
+
+std::string frame_name(int i) {
+  char name[32];
+  std::snprintf(name, sizeof name, "%06d.png", i);
+  return name;
+}
+
+int numbered_pngs(const fs::path& dir) {
+  static const std::regex numbered(R"(\d{6}\.png)");
+  int n = 0;
+  for (const auto& e : fs::directory_iterator(dir))
+    if (std::regex_match(e.path().filename().string(), numbered)) ++n;
+  return n;
+}
+
+std::vector<std::string> temporaries(const fs::path& dir) {
+  std::vector<std::string> found;
+  for (const auto& e : fs::recursive_directory_iterator(dir)) {
+    const std::string name = e.path().filename().string();
+    if (name.find(".tmp") != std::string::npos || name.find(".part") != std::string::npos)
+      found.push_back(e.path().string());
+  }
+  return found;
+}
+
+class RunFrames : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    root_ = fs::temp_directory_path() / ("landslide-app-test-" + std::to_string(::getpid()));
+    fs::remove_all(root_);
+    fs::create_directories(root_);
+    scenario_ = root_ / "tiny-block.json";
+    std::ofstream(scenario_) << kScene;
+    out_ = root_ / "out";
+    ffmpeg_ = render::ffmpeg_available(nullptr);
+    if (!ffmpeg_) return;
+    app::RunOptions o;
+    o.scenario = scenario_.string();
+    o.out_dir = out_.string();
+    o.threads = 1;
+    status_ = app::run_command(o);
+  }
+  static void TearDownTestSuite() { fs::remove_all(root_); }
+  void SetUp() override {
+    if (!ffmpeg_) GTEST_SKIP() << "ffmpeg (with libx264, gif, palettegen) is not available";
+    ASSERT_EQ(status_, app::kExitOk);
+  }
+
+  static fs::path root_, scenario_, out_;
+  static bool ffmpeg_;
+  static int status_;
+};
+
+fs::path RunFrames::root_, RunFrames::scenario_, RunFrames::out_;
+bool RunFrames::ffmpeg_ = false;
+int RunFrames::status_ = -1;
+
+TEST_F(RunFrames, NumberedPngsPerFieldAtTheImageSize) {
+  for (const std::string& field : kFields) {
+    const fs::path dir = out_ / "frames" / field;
+    ASSERT_TRUE(fs::is_directory(dir)) << dir;
+    EXPECT_EQ(numbered_pngs(dir), kFrames) << dir;
+    for (int i = 0; i < kFrames; ++i) {
+      const render::Image img = render::read_png((dir / frame_name(i)).string());
+      EXPECT_EQ(img.width(), 320);
+      EXPECT_EQ(img.height(), 180);
+    }
+  }
+}
+
+TEST_F(RunFrames, FramesChangeWhileTheBlockMoves) {
+  const fs::path dir = out_ / "frames" / "velocity";
+  const render::Image first = render::read_png((dir / frame_name(0)).string());
+  const render::Image later = render::read_png((dir / frame_name(2)).string());
+  EXPECT_GT(render::diff_images(later, first).differing_pixels, 0u);
+}
+
+TEST_F(RunFrames, Mp4AndGifPerField) {
+  for (const std::string& field : kFields) {
+    for (const char* ext : {".mp4", ".gif"}) {
+      const fs::path p = out_ / (field + ext);
+      ASSERT_TRUE(fs::is_regular_file(p)) << p;
+      EXPECT_GT(fs::file_size(p), 100u) << p;
+    }
+  }
+}
+
+TEST_F(RunFrames, StatesJsonNamesStageAndFrame) {
+  std::ifstream in(out_ / "vtk" / "states.json");
+  std::stringstream text;
+  text << in.rdbuf();
+  EXPECT_NE(text.str().find("\"frame-000007.vtu\""), std::string::npos);
+  EXPECT_NE(text.str().find("\"slump\""), std::string::npos);
+}
+
+TEST_F(RunFrames, NothingHalfWritten) {
+  EXPECT_EQ(temporaries(root_), std::vector<std::string>{});
+}
+
+TEST_F(RunFrames, RenderReproducesEveryFrameOfEveryField) {
+  for (const std::string& field : kFields) {
+    app::RenderOptions o;
+    o.input = out_.string();
+    o.scenario = scenario_.string();
+    o.field = field;
+    o.out = (root_ / "render" / field).string();
+    ASSERT_EQ(app::render_command(o), app::kExitOk) << field;
+    for (int i = 0; i < kFrames; ++i) {
+      const render::Image run = render::read_png((out_ / "frames" / field / frame_name(i)).string());
+      const render::Image again = render::read_png((root_ / "render" / field / frame_name(i)).string());
+      const render::DiffResult d = render::diff_images(again, run);
+      EXPECT_TRUE(d.passed) << field << " frame " << i << ": " << d.summary();
+    }
+  }
+  EXPECT_EQ(temporaries(root_), std::vector<std::string>{});
+}
+
+TEST_F(RunFrames, RenderOneVtuToAPngWithAFixedRange) {
+  app::RenderOptions o;
+  o.input = (out_ / "vtk" / "frame-000003.vtu").string();
+  o.scenario = scenario_.string();
+  o.field = "stress-yy";  // not among the run's fields: any field can be re-painted
+  o.colour_map = "jet";
+  o.range = std::make_pair(-40.0, 0.0);
+  o.out = (root_ / "one" / "stress.png").string();
+  ASSERT_EQ(app::render_command(o), app::kExitOk);
+  const render::Image img = render::read_png(o.out);
+  EXPECT_EQ(img.width(), 320);
+  EXPECT_EQ(img.height(), 180);
+}
+
+TEST_F(RunFrames, RenderRefusesBadArguments) {
+  app::RenderOptions good;
+  good.input = out_.string();
+  good.scenario = scenario_.string();
+  good.field = "velocity";
+  good.out = (root_ / "bad").string();
+  auto status = [&](auto change) {
+    app::RenderOptions o = good;
+    change(o);
+    return app::render_command(o);
+  };
+  EXPECT_EQ(status([](app::RenderOptions& o) { o.field = "pressure"; }), app::kExitBadInput);
+  EXPECT_EQ(status([](app::RenderOptions& o) { o.input += "/nowhere"; }), app::kExitBadInput);
+  EXPECT_EQ(status([](app::RenderOptions& o) { o.scenario += ".missing"; }),
+            app::kExitBadInput);
+  EXPECT_EQ(status([](app::RenderOptions& o) { o.colour_map = "rainbow"; }),
+            app::kExitBadInput);
+  EXPECT_EQ(status([](app::RenderOptions& o) { o.range = std::make_pair(1.0, 1.0); }),
+            app::kExitBadInput);
+  // Eight states cannot go into one PNG file.
+  EXPECT_EQ(status([&](app::RenderOptions& o) { o.out = (root_ / "bad.png").string(); }),
+            app::kExitBadInput);
+  // A directory without vtk/points.pvd.
+  EXPECT_EQ(status([&](app::RenderOptions& o) { o.input = (out_ / "frames").string(); }),
+            app::kExitBadInput);
+  EXPECT_FALSE(fs::exists(root_ / "bad"));
+  EXPECT_FALSE(fs::exists(root_ / "bad.png"));
+}
+
+TEST_F(RunFrames, PanelOfFourFrames) {
+  app::PanelOptions o;
+  o.out = (root_ / "panel" / "panel.png").string();
+  o.title = "tiny block";
+  o.cols = 2;
+  for (const std::string& field : kFields) {
+    o.items.push_back((out_ / "frames" / field / frame_name(4)).string());
+    o.items.push_back(field);
+  }
+  ASSERT_EQ(app::panel_command(o), app::kExitOk);
+  const render::Image panel = render::read_png(o.out);
+  EXPECT_GT(panel.width(), 2 * 320);
+  EXPECT_GT(panel.height(), 2 * 180);
+
+  app::PanelOptions odd = o;
+  odd.items.pop_back();  // an image without its caption
+  EXPECT_EQ(app::panel_command(odd), app::kExitBadInput);
+  app::PanelOptions missing = o;
+  missing.items[0] = (root_ / "no-such.png").string();
+  EXPECT_EQ(app::panel_command(missing), app::kExitBadInput);
+}
+
+// Without ffmpeg a run that paints refuses to start: exit 2, nothing written.
+TEST(RunCommand, RefusesToPaintWithoutFfmpegBeforeSimulating) {
+  const fs::path root =
+      fs::temp_directory_path() / ("landslide-app-noffmpeg-" + std::to_string(::getpid()));
+  fs::remove_all(root);
+  fs::create_directories(root / "empty-bin");
+  const fs::path scenario = root / "tiny-block.json";
+  std::ofstream(scenario) << kScene;
+  const char* old = std::getenv("PATH");
+  const std::string saved = old ? old : "";
+  ::setenv("PATH", (root / "empty-bin").c_str(), 1);
+  app::RunOptions o;
+  o.scenario = scenario.string();
+  o.out_dir = (root / "out").string();
+  o.threads = 1;
+  const int status = app::run_command(o);
+  ::setenv("PATH", saved.c_str(), 1);
+  EXPECT_EQ(status, app::kExitBadInput);
+  EXPECT_FALSE(fs::exists(root / "out"));
+  fs::remove_all(root);
+}
+
+}  // namespace
