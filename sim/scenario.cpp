@@ -6,7 +6,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <regex>
+#include <map>
 #include <sstream>
 
 #include "sim/scenario_geometry.hpp"
@@ -29,9 +29,10 @@ MaterialSpec parse_material(const Node& node, const std::string& name) {
   m.model = model == "mohr-coulomb" ? MaterialModel::MohrCoulomb : MaterialModel::LinearElastic;
   if (m.model == MaterialModel::MohrCoulomb)
     require_object(node, {"model", "density", "youngs_modulus", "poisson_ratio", "cohesion",
-                          "friction_angle", "dilation_angle"});
+                          "friction_angle", "dilation_angle"}, "a mohr-coulomb material");
   else
-    require_object(node, {"model", "density", "youngs_modulus", "poisson_ratio"});
+    require_object(node, {"model", "density", "youngs_modulus", "poisson_ratio"},
+                   "a linear-elastic material");
   const std::string need = "required for a " + model + " material";
   m.density = positive(required(node, "density", need));
   m.youngs_modulus = positive(required(node, "youngs_modulus", need));
@@ -60,36 +61,76 @@ std::vector<MaterialSpec> parse_materials(const Node& node) {
   return materials;
 }
 
-std::vector<Vec2> parse_polygon(const Node& node) {
-  if (!node.value.is_array() || node.value.size() < 3 || node.value.size() > 100000)
-    fail(node, "an array of at least 3 vertices [x, y]");
+// Validation compares every pair of edges in a polygon and of two bodies, so
+// the sizes are capped where that stays well under a second.
+constexpr std::size_t kMaxVertices = 10000;       // one polygon
+constexpr std::size_t kMaxTotalVertices = 20000;  // all bodies together
+constexpr std::size_t kMaxBodies = 1000;
+
+std::string domain_text(const Scenario& s) {
+  std::ostringstream text;
+  text << "[" << s.domain_min[0] << ", " << s.domain_max[0] << "] x [" << s.domain_min[1] << ", "
+       << s.domain_max[1] << "]";
+  return text.str();
+}
+
+// A body vertex, which must lie inside the walls (to round-off of the domain's size).
+Vec2 vertex(const Node& node, const Scenario& s) {
+  const Vec2 v = vec2(node);
+  const double tol = 1e-9 * std::max(s.domain_max[0] - s.domain_min[0],
+                                     s.domain_max[1] - s.domain_min[1]);
+  if (v[0] < s.domain_min[0] - tol || v[0] > s.domain_max[0] + tol ||
+      v[1] < s.domain_min[1] - tol || v[1] > s.domain_max[1] + tol)
+    fail(node, "a point inside the domain " + domain_text(s));
+  return v;
+}
+
+std::vector<Vec2> parse_polygon(const Node& node, const Scenario& s) {
+  if (!node.value.is_array() || node.value.size() < 3 || node.value.size() > kMaxVertices)
+    fail(node, "an array of 3 to " + std::to_string(kMaxVertices) + " vertices [x, y]");
   std::vector<Vec2> polygon;
-  for (std::size_t i = 0; i < node.value.size(); ++i) polygon.push_back(vec2(node.at(i)));
-  if (!polygon_is_simple(polygon)) fail(node, "a simple polygon (its edges cross or touch)");
+  for (std::size_t i = 0; i < node.value.size(); ++i) polygon.push_back(vertex(node.at(i), s));
+  if (const auto contact = polygon_self_contact(polygon)) {
+    const std::size_t n = polygon.size(), i = (*contact)[0], j = (*contact)[1];
+    const auto edge = [n](std::size_t k) {
+      return std::to_string(k) + "-" + std::to_string((k + 1) % n);
+    };
+    if (i == j && i == n - 1)
+      fail(node, "a simple polygon (the last vertex repeats the first; it is closed already)");
+    fail(node, i == j ? "a simple polygon (vertices " + edge(i) + " are the same point)"
+                      : "a simple polygon (edges " + edge(i) + " and " + edge(j) +
+                            " cross or touch; vertices count from 0)");
+  }
   const double area = signed_area(polygon);
   if (area == 0) fail(node, "a polygon of non-zero area");
   if (area < 0) std::reverse(polygon.begin(), polygon.end());
   return polygon;
 }
 
-BodySpec parse_body(const Node& node, const std::vector<MaterialSpec>& materials) {
+// `names` maps the names of the bodies before this one to their indices.
+BodySpec parse_body(const Node& node, const Scenario& s,
+                    const std::map<std::string, std::size_t>& names) {
   require_object(node, {"name", "material", "rectangle", "polygon"});
   BodySpec b;
-  b.name = string(required(node, "name"));
-  if (b.name.empty()) fail(node.at("name"), "a non-empty name");
+  const Node name_node = required(node, "name");
+  b.name = string(name_node);
+  if (b.name.empty()) fail(name_node, "a non-empty name");
+  if (const auto seen = names.find(b.name); seen != names.end())
+    fail(name_node,
+         "a name no other body has (bodies[" + std::to_string(seen->second) + "] has it)");
   const Node material = required(node, "material");
   const std::string name = string(material);
-  for (std::size_t i = 0; i < materials.size(); ++i)
-    if (materials[i].name == name) b.material = static_cast<int>(i);
+  for (std::size_t i = 0; i < s.materials.size(); ++i)
+    if (s.materials[i].name == name) b.material = static_cast<int>(i);
   if (b.material < 0) fail(material, "the name of a material in materials");
   if (node.has("rectangle") == node.has("polygon"))
     fail(node, "exactly one of \"rectangle\" or \"polygon\"");
   if (node.has("polygon")) {
-    b.polygon = parse_polygon(node.at("polygon"));
+    b.polygon = parse_polygon(node.at("polygon"), s);
   } else {
     const Node r = node.at("rectangle");
     require_object(r, {"min", "max"});
-    const Vec2 lo = vec2(required(r, "min")), hi = vec2(required(r, "max"));
+    const Vec2 lo = vertex(required(r, "min"), s), hi = vertex(required(r, "max"), s);
     if (!(hi[0] > lo[0] && hi[1] > lo[1])) fail(r.at("max"), "max > min in x and y");
     b.polygon = {lo, {hi[0], lo[1]}, hi, {lo[0], hi[1]}};
   }
@@ -97,26 +138,21 @@ BodySpec parse_body(const Node& node, const std::vector<MaterialSpec>& materials
 }
 
 void parse_bodies(const Node& node, Scenario& s) {
-  if (!node.value.is_array() || node.value.empty()) fail(node, "an array of bodies (at least one)");
-  const double tol = 1e-9 * std::max(s.domain_max[0] - s.domain_min[0],
-                                     s.domain_max[1] - s.domain_min[1]);
+  if (!node.value.is_array() || node.value.empty() || node.value.size() > kMaxBodies)
+    fail(node, "an array of 1 to " + std::to_string(kMaxBodies) + " bodies");
+  std::map<std::string, std::size_t> names;
+  std::size_t vertices = 0;
   for (std::size_t i = 0; i < node.value.size(); ++i) {
     const Node body = node.at(i);
-    s.bodies.push_back(parse_body(body, s.materials));
+    s.bodies.push_back(parse_body(body, s, names));
     const BodySpec& b = s.bodies.back();
-    for (std::size_t k = 0; k < i; ++k) {
-      if (s.bodies[k].name == b.name) fail(body.at("name"), "a name no other body has");
-    }
-    for (const Vec2& v : b.polygon) {
-      if (v[0] < s.domain_min[0] - tol || v[0] > s.domain_max[0] + tol ||
-          v[1] < s.domain_min[1] - tol || v[1] > s.domain_max[1] + tol) {
-        std::ostringstream msg;
-        msg << "vertices inside the domain [" << s.domain_min[0] << ", " << s.domain_max[0]
-            << "] x [" << s.domain_min[1] << ", " << s.domain_max[1] << "], but (" << v[0]
-            << ", " << v[1] << ") is outside";
-        fail(body, msg.str());
-      }
-    }
+    names.emplace(b.name, i);
+    vertices += b.polygon.size();
+    if (vertices > kMaxTotalVertices)
+      fail(body.at(body.has("polygon") ? "polygon" : "rectangle"),
+           "at most " + std::to_string(kMaxTotalVertices) +
+               " vertices in all bodies together (this body brings them to " +
+               std::to_string(vertices) + ")");
     for (std::size_t k = 0; k < i; ++k) {
       if (s.bodies[k].material != b.material && polygons_overlap(s.bodies[k].polygon, b.polygon))
         fail_at(node.file, body.path + " (" + b.name + ") overlaps bodies[" + std::to_string(k) +
@@ -158,7 +194,12 @@ Scenario parse_document(const Json& doc, const std::string& file) {
   s.source_path = file;
   const Node name = required(root, "name");
   s.name = string(name);
-  if (!std::regex_match(s.name, std::regex("[A-Za-z0-9._-]{1,100}")))
+  // The name becomes part of file names and titles: keep it to safe characters.
+  const bool safe = std::all_of(s.name.begin(), s.name.end(), [](char c) {
+    return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') ||
+           c == '.' || c == '_' || c == '-';
+  });
+  if (s.name.empty() || s.name.size() > 100 || !safe)
     fail(name, "1 to 100 characters from A-Z a-z 0-9 . _ -");
   if (root.has("description")) s.description = string(root.at("description"));
   const Node domain = required(root, "domain");

@@ -2,6 +2,9 @@
 // polygons, overlap) and what the point seeder needs (inside test, area).
 #pragma once
 
+#include <array>
+#include <cstddef>
+#include <optional>
 #include <vector>
 
 #include "sim/scenario.hpp"
@@ -19,6 +22,12 @@ bool point_in_polygon(const std::vector<Vec2>& polygon, const Vec2& p);
 // No two non-adjacent edges touch, and adjacent edges meet only at their
 // shared vertex.
 bool polygon_is_simple(const std::vector<Vec2>& polygon);
+
+// Two edges that break the rule above (edge k runs from vertex k to vertex
+// k + 1), smaller index first; nothing when the polygon is simple. {k, k}:
+// edge k has no length (a vertex repeated). Among several contacts, the
+// smallest pair. A polygon of fewer than 3 vertices reports {0, 0}.
+std::optional<std::array<std::size_t, 2>> polygon_self_contact(const std::vector<Vec2>& polygon);
 
 // The two simple polygons share a region of positive area (touching along an
 // edge or at a vertex does not count).

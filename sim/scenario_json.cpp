@@ -18,10 +18,76 @@ Node Node::at(std::size_t index) const {
 
 bool Node::has(const std::string& key) const { return value.is_object() && value.contains(key); }
 
+namespace {
+
+constexpr std::size_t kShowLimit = 60;
+constexpr std::size_t kMaxDepth = 64;
+
+std::string shorten(const std::string& text) {
+  return text.size() <= kShowLimit ? text : text.substr(0, kShowLimit - 3) + "...";
+}
+
+// Appends `value` to `out` until `out` passes the limit: an error shows only
+// the start of a value, so a huge array costs no more than a short one, and
+// the recursion is as deep as the text shown, not as the value.
+void show_into(const Json& value, std::string& out) {
+  if (out.size() > kShowLimit) return;
+  switch (value.type()) {
+    case Json::value_t::array: {
+      out += '[';
+      bool first = true;
+      for (const Json& element : value) {
+        if (out.size() > kShowLimit) return;
+        if (!first) out += ',';
+        first = false;
+        show_into(element, out);
+      }
+      out += ']';
+      return;
+    }
+    case Json::value_t::object: {
+      out += '{';
+      bool first = true;
+      for (const auto& item : value.items()) {
+        if (out.size() > kShowLimit) return;
+        if (!first) out += ',';
+        first = false;
+        show_into(Json(item.key()), out);
+        out += ':';
+        show_into(item.value(), out);
+      }
+      out += '}';
+      return;
+    }
+    case Json::value_t::string: {
+      const std::string& text = value.get_ref<const std::string&>();
+      const std::string head = text.substr(0, kShowLimit + 4);
+      out += Json(head).dump(-1, ' ', false, Json::error_handler_t::replace);
+      return;
+    }
+    case Json::value_t::number_float: {
+      const double v = value.get<double>();
+      // nlohmann writes a non-finite number as null, which would hide the problem.
+      if (std::isnan(v)) out += "nan";
+      else if (std::isinf(v)) out += v < 0 ? "-inf" : "inf";
+      else out += value.dump();
+      return;
+    }
+    default:
+      out += value.dump();
+  }
+}
+
+}  // namespace
+
 std::string show(const Json& value) {
-  std::string text = value.dump(-1, ' ', false, Json::error_handler_t::replace);
-  if (text.size() > 60) text = text.substr(0, 57) + "...";
-  return text;
+  std::string text;
+  show_into(value, text);
+  if (text.size() <= kShowLimit) return text;
+  std::size_t cut = kShowLimit - 3;
+  // Never split a UTF-8 sequence: the message must stay valid text.
+  while (cut > 0 && (static_cast<unsigned char>(text[cut]) & 0xC0) == 0x80) --cut;
+  return text.substr(0, cut) + "...";
 }
 
 void fail_at(const std::string& file, const std::string& message) {
@@ -38,7 +104,8 @@ void fail_missing(const Node& parent, const std::string& key, const std::string&
                            why + ")");
 }
 
-void require_object(const Node& node, std::initializer_list<const char*> allowed) {
+void require_object(const Node& node, std::initializer_list<const char*> allowed,
+                    const std::string& owner) {
   if (!node.value.is_object()) fail(node, "an object");
   for (const auto& item : node.value.items()) {
     bool known = false;
@@ -46,8 +113,10 @@ void require_object(const Node& node, std::initializer_list<const char*> allowed
     if (known) continue;
     std::string list;
     for (const char* a : allowed) list += (list.empty() ? "" : ", ") + std::string(a);
-    fail_at(node.file, (node.path.empty() ? item.key() : node.path + "." + item.key()) +
-                           ": unknown key (allowed: " + list + ")");
+    const std::string key = shorten(item.key());
+    fail_at(node.file, (node.path.empty() ? key : node.path + "." + key) +
+                           ": unknown key" + (owner.empty() ? "" : " for " + owner) +
+                           " (allowed: " + list + ")");
   }
 }
 
@@ -58,12 +127,43 @@ Node required(const Node& parent, const std::string& key, const std::string& why
 
 namespace {
 
+// The library's reason without its prefix: "[json.exception.parse_error.101]
+// parse error at line 3, column 7: syntax error ..." gives "syntax error ...".
+std::string syntax_reason(const std::string& what) {
+  std::string rest = what;
+  const std::size_t tag = rest.find("] ");
+  if (rest.rfind("[json.exception.", 0) == 0 && tag != std::string::npos) rest.erase(0, tag + 2);
+  if (rest.rfind("parse error", 0) == 0) {
+    const std::size_t colon = rest.find(": ");
+    rest.erase(0, colon == std::string::npos ? rest.size() : colon + 2);
+  }
+  // The library quotes the token read so far, which can be a whole file.
+  return rest.size() > 240 ? rest.substr(0, 237) + "..." : rest;
+}
+
+// "line L, column C" of byte `offset` in `text`, both from 1, columns in
+// characters. The library's own count places a token that ends a line at
+// column 0 of the next one.
+std::string location(const std::string& text, std::size_t offset) {
+  std::size_t line = 1, column = 1;
+  for (std::size_t i = 0; i < offset && i < text.size(); ++i) {
+    if (text[i] == '\n') {
+      ++line;
+      column = 1;
+    } else if ((static_cast<unsigned char>(text[i]) & 0xC0) != 0x80) {
+      ++column;
+    }
+  }
+  return "line " + std::to_string(line) + ", column " + std::to_string(column);
+}
+
 // Follows the parser through the document as a JSON path, so a number that
 // overflows a double and a repeated key are reported where they are (the DOM
 // parser would reject the first without a place and silently keep the last
 // of the second).
 class PathTracker : public nlohmann::json_sax<Json> {
  public:
+  explicit PathTracker(const std::string& text) : text_(text) {}
   std::string error;  // why the parse stopped
 
   bool null() override { return value(); }
@@ -73,10 +173,7 @@ class PathTracker : public nlohmann::json_sax<Json> {
   bool number_float(number_float_t, const string_t&) override { return value(); }
   bool string(string_t&) override { return value(); }
   bool binary(binary_t&) override { return value(); }
-  bool start_object(std::size_t) override {
-    frames_.push_back(Frame{true, {}, {}, 0});
-    return true;
-  }
+  bool start_object(std::size_t) override { return open(true); }
   bool key(string_t& key) override {
     Frame& f = frames_.back();
     f.key = key;
@@ -88,20 +185,22 @@ class PathTracker : public nlohmann::json_sax<Json> {
     frames_.pop_back();
     return value();
   }
-  bool start_array(std::size_t) override {
-    frames_.push_back(Frame{false, {}, {}, 0});
-    return true;
-  }
+  bool start_array(std::size_t) override { return open(false); }
   bool end_array() override {
     frames_.pop_back();
     return value();
   }
-  bool parse_error(std::size_t, const std::string& token, const Json::exception& e) override {
+  bool parse_error(std::size_t position, const std::string& token,
+                   const Json::exception& e) override {
     if (e.id == 406)  // number overflow
-      error = (frames_.empty() ? std::string("(top level)") : path()) + " = " + token +
-              ": expected a finite number (this one is too large for a double)";
-    else
-      error = std::string("invalid JSON: ") + e.what();
+      error = (frames_.empty() ? std::string("(top level)") : path()) + " = " +
+              shorten(token) + ": expected a finite number (this one is too large for a double)";
+    else {
+      // `position` counts the characters read: the last of them is where
+      // the parser gave up.
+      error = "invalid JSON at " + location(text_, position > 0 ? position - 1 : 0) + ": " +
+              syntax_reason(e.what());
+    }
     return false;
   }
 
@@ -113,6 +212,18 @@ class PathTracker : public nlohmann::json_sax<Json> {
     std::size_t index;
   };
 
+  // No scenario nests deeper than 5 levels; refusing deep junk early keeps
+  // every later pass over the document (and its error text) shallow.
+  bool open(bool object) {
+    if (frames_.size() >= kMaxDepth) {
+      error = shorten(path()) + ": arrays and objects nested deeper than " +
+              std::to_string(kMaxDepth) + " levels (a scenario needs at most 5)";
+      return false;
+    }
+    frames_.push_back(Frame{object, {}, {}, 0});
+    return true;
+  }
+
   // A value ended: the next one in an array has the next index.
   bool value() {
     if (!frames_.empty() && !frames_.back().object) ++frames_.back().index;
@@ -121,11 +232,14 @@ class PathTracker : public nlohmann::json_sax<Json> {
 
   std::string path() const {
     std::string p;
-    for (const Frame& f : frames_)
-      p += f.object ? (p.empty() ? f.key : "." + f.key) : "[" + std::to_string(f.index) + "]";
+    for (const Frame& f : frames_) {
+      const std::string key = shorten(f.key);
+      p += f.object ? (p.empty() ? key : "." + key) : "[" + std::to_string(f.index) + "]";
+    }
     return p;
   }
 
+  const std::string& text_;
   std::vector<Frame> frames_;
 };
 
@@ -139,12 +253,12 @@ std::string format_bound(double v) {
 }  // namespace
 
 Json parse_text(const std::string& text, const std::string& file) {
-  PathTracker tracker;
+  PathTracker tracker(text);
   try {
     if (!Json::sax_parse(text, &tracker)) fail_at(file, tracker.error);
     return Json::parse(text);
   } catch (const Json::exception& e) {  // not expected once the tracker has passed the text
-    fail_at(file, std::string("invalid JSON: ") + e.what());
+    fail_at(file, "invalid JSON: " + syntax_reason(e.what()));
   }
 }
 

@@ -32,8 +32,11 @@ Json parse_text(const std::string& text, const std::string& file);
 [[noreturn]] void fail_missing(const Node& parent, const std::string& key, const std::string& why);
 [[noreturn]] void fail_at(const std::string& file, const std::string& message);
 
-// The object at node; every key must be one of `allowed`.
-void require_object(const Node& node, std::initializer_list<const char*> allowed);
+// The object at node; every key must be one of `allowed`. `owner`, when
+// given, says whose keys these are ("a dynamic stage"), for keys that are
+// allowed only elsewhere.
+void require_object(const Node& node, std::initializer_list<const char*> allowed,
+                    const std::string& owner = "");
 // The child `key`, which must be present (`why` says what needs it).
 Node required(const Node& parent, const std::string& key, const std::string& why = "required");
 

@@ -1,6 +1,9 @@
 // Stages, output settings and the memory budget of a scenario.
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
+#include <map>
+#include <set>
 #include <sstream>
 
 #include "sim/scenario_geometry.hpp"
@@ -37,9 +40,10 @@ void parse_changes(const Node& node, StageSpec& stage, std::vector<MaterialSpec>
   const Node set = required(node, "set", "required for a material-change stage");
   if (m.model == MaterialModel::MohrCoulomb)
     require_object(set, {"cohesion", "friction_angle", "dilation_angle", "youngs_modulus",
-                         "poisson_ratio"});
+                         "poisson_ratio"}, "mohr-coulomb material \"" + m.name + "\"");
   else
-    require_object(set, {"youngs_modulus", "poisson_ratio"});
+    require_object(set, {"youngs_modulus", "poisson_ratio"},
+                   "linear-elastic material \"" + m.name + "\"");
   if (set.value.empty()) fail(set, "at least one property to change");
   for (const auto& item : set.value.items()) {  // nlohmann orders keys alphabetically
     const Node v = set.at(item.key());
@@ -68,25 +72,27 @@ void parse_changes(const Node& node, StageSpec& stage, std::vector<MaterialSpec>
 StageSpec parse_stage(const Node& node, std::vector<MaterialSpec>& materials) {
   StageSpec s;
   if (!node.value.is_object()) fail(node, "an object");
-  const Node type = required(node, "type");
-  const std::string kind = one_of(type, {"gravity", "material-change", "dynamic"});
   s.name = string(required(node, "name"));
   if (s.name.empty()) fail(node.at("name"), "a non-empty name");
+  const Node type = required(node, "type");
+  const std::string kind = one_of(type, {"gravity", "material-change", "dynamic"});
   const std::string need = "required for a " + kind + " stage";
   if (kind == "material-change") {
     s.type = StageType::MaterialChange;
-    require_object(node, {"name", "type", "material", "set"});
+    require_object(node, {"name", "type", "material", "set"}, "a material-change stage");
     parse_changes(node, s, materials);
     return s;
   }
   s.type = kind == "gravity" ? StageType::Gravity : StageType::Dynamic;
   if (s.type == StageType::Gravity) {
-    require_object(node, {"name", "type", "duration", "ramp_fraction", "damping", "stop_at_rest"});
+    require_object(node, {"name", "type", "duration", "ramp_fraction", "damping", "stop_at_rest"},
+                   "a gravity stage");
     s.duration = positive(required(node, "duration", need));
     s.ramp_fraction = number(required(node, "ramp_fraction", need), 0, Bound::Open, 1, Bound::Closed);
     s.damping = non_negative(required(node, "damping", need));
   } else {
-    require_object(node, {"name", "type", "duration", "damping", "stop_at_rest"});
+    require_object(node, {"name", "type", "duration", "damping", "stop_at_rest"},
+                   "a dynamic stage");
     s.duration = positive(required(node, "duration", need));
     if (node.has("damping")) s.damping = non_negative(node.at("damping"));
   }
@@ -100,11 +106,13 @@ std::vector<StageSpec> parse_stages(const Node& node, const std::vector<Material
   if (!node.value.is_array() || node.value.empty()) fail(node, "an array of stages (at least one)");
   std::vector<MaterialSpec> current = materials;
   std::vector<StageSpec> stages;
+  std::map<std::string, std::size_t> names;
   for (std::size_t i = 0; i < node.value.size(); ++i) {
     stages.push_back(parse_stage(node.at(i), current));
-    for (std::size_t k = 0; k < i; ++k)
-      if (stages[k].name == stages[i].name)
-        fail(node.at(i).at("name"), "a name no other stage has");
+    const auto [seen, fresh] = names.emplace(stages[i].name, i);
+    if (!fresh)
+      fail(node.at(i).at("name"),
+           "a name no other stage has (stages[" + std::to_string(seen->second) + "] has it)");
   }
   return stages;
 }
@@ -126,12 +134,13 @@ OutputSpec parse_output(const Node& node, const std::vector<StageSpec>& stages) 
   if (node.has("frame_stages")) {
     const Node list = node.at("frame_stages");
     if (!list.value.is_array()) fail(list, "an array of stage names");
+    std::set<std::string> timed, listed;
+    for (const StageSpec& s : stages)
+      if (s.type != StageType::MaterialChange) timed.insert(s.name);
     for (std::size_t i = 0; i < list.value.size(); ++i) {
       const std::string name = string(list.at(i));
-      const auto it = std::find_if(stages.begin(), stages.end(),
-                                   [&](const StageSpec& s) { return s.name == name; });
-      if (it == stages.end() || it->type == StageType::MaterialChange)
-        fail(list.at(i), "the name of a gravity or dynamic stage");
+      if (!timed.count(name)) fail(list.at(i), "the name of a gravity or dynamic stage");
+      if (!listed.insert(name).second) fail(list.at(i), "each stage once");
       o.frame_stages.push_back(name);
     }
   } else {
@@ -165,13 +174,26 @@ OutputSpec parse_output(const Node& node, const std::vector<StageSpec>& stages) 
   return o;
 }
 
+namespace {
+
+// A count as a whole number ("20000000", not "2e+07"), or "inf".
+std::string count_text(double n) {
+  if (!std::isfinite(n)) return std::isnan(n) ? "nan" : "inf";
+  std::ostringstream text;
+  if (n < 1e15) text << std::fixed << std::setprecision(0) << n;
+  else text << n;
+  return text.str();
+}
+
+}  // namespace
+
 void check_memory_budget_of_grid(const Node& root, const Scenario& s) {
   const double nodes = ((s.domain_max[0] - s.domain_min[0]) / s.cell_size + 2 * s.padding_cells + 2) *
                        ((s.domain_max[1] - s.domain_min[1]) / s.cell_size + 2 * s.padding_cells + 2);
   if (!(nodes <= kMaxGridNodes)) {
     std::ostringstream msg;
-    msg << "a grid of at most " << kMaxGridNodes << " nodes; this domain and cell size need about "
-        << nodes;
+    msg << "a grid of at most " << count_text(kMaxGridNodes)
+        << " nodes; this domain, cell size and padding need about " << count_text(nodes);
     fail(root.at("grid").at("cell_size"), msg.str());
   }
 }
@@ -190,8 +212,8 @@ void check_memory_budget_of_points(const Node& root, const Scenario& s) {
   }
   if (!(points <= kMaxPoints)) {
     std::ostringstream msg;
-    msg << "at most " << kMaxPoints << " points; the bodies at this cell size and points_per_cell "
-        << "need about " << points;
+    msg << "at most " << count_text(kMaxPoints) << " points (body area / (cell_size / "
+        << "points_per_cell)^2); the bodies need about " << count_text(points);
     fail(root.at("grid"), msg.str());
   }
 }

@@ -44,13 +44,13 @@ const std::vector<BadCase>& bad_cases() {
        {"colour: unknown key (allowed: name, description, domain, grid, gravity, boundaries, "
         "materials, bodies, time_step, stages, output)"}},
       {"UnknownMaterialKey", [](Json& d) { d["materials"]["house"]["cohesion"] = 10; },
-       {"materials.house.cohesion: unknown key (allowed: model, density, youngs_modulus, "
-        "poisson_ratio)"}},
+       {"materials.house.cohesion: unknown key for a linear-elastic material (allowed: model, "
+        "density, youngs_modulus, poisson_ratio)"}},
       {"UnknownBodyKey", [](Json& d) { d["bodies"][1]["colour"] = "brown"; },
        {"bodies[1].colour: unknown key (allowed: name, material, rectangle, polygon)"}},
       {"UnknownStageKey", [](Json& d) { d["stages"][2]["ramp_fraction"] = 0.5; },
-       {"stages[2].ramp_fraction: unknown key (allowed: name, type, duration, damping, "
-        "stop_at_rest)"}},
+       {"stages[2].ramp_fraction: unknown key for a dynamic stage (allowed: name, type, duration, "
+        "damping, stop_at_rest)"}},
       {"UnknownOutputKey", [](Json& d) { d["output"]["format"] = "png"; },
        {"output.format: unknown key (allowed: frame_interval, frame_stages, fields, colour_map, "
         "displacement_reference, vtk, image_size)"}},
@@ -61,10 +61,20 @@ const std::vector<BadCase>& bad_cases() {
        {"bodies[2] (house) overlaps bodies[1] (slope) of a different material"}},
       {"BowTiePolygon",
        [](Json& d) { d["bodies"][1]["polygon"] = {{0, 2}, {52, 12}, {52, 2}, {0, 12}}; },
-       {"bodies[1].polygon = [[0,2],[52,12],[52,2],[0,12]]: expected a simple polygon"}},
+       {"bodies[1].polygon = [[0,2],[52,12],[52,2],[0,12]]: expected a simple polygon (edges 0-1 "
+        "and 2-3 cross or touch"}},
+      {"ClosedPolygon",
+       [](Json& d) { d["bodies"][1]["polygon"] = {{0, 2}, {0, 12}, {40, 12}, {52, 2}, {0, 2}}; },
+       {"bodies[1].polygon = [[0,2],[0,12],[40,12],[52,2],[0,2]]: expected a simple polygon (the "
+        "last vertex repeats the first; it is closed already)"}},
+      {"RepeatedVertex",
+       [](Json& d) { d["bodies"][1]["polygon"] = {{0, 2}, {0, 12}, {0, 12}, {40, 12}, {52, 2}}; },
+       {"expected a simple polygon (vertices 1-2 are the same point)"}},
       {"BodyOutsideDomain", [](Json& d) { d["bodies"][2]["rectangle"]["max"] = {36, 25}; },
-       {"bodies[2] = ", "expected vertices inside the domain [0, 80] x [0, 20], but (36, 25) is "
-                        "outside"}},
+       {"bodies[2].rectangle.max = [36,25]: expected a point inside the domain [0, 80] x [0, 20]"}},
+      {"PolygonVertexOutsideDomain",
+       [](Json& d) { d["bodies"][1]["polygon"][3] = {52, -0.5}; },
+       {"bodies[1].polygon[3] = [52,-0.5]: expected a point inside the domain [0, 80] x [0, 20]"}},
       {"RectangleMaxBelowMin", [](Json& d) { d["bodies"][2]["rectangle"]["max"] = {36, 11}; },
        {"bodies[2].rectangle.max = [36,11]: expected max > min in x and y"}},
       {"GravityWithoutDuration", [](Json& d) { d["stages"][0].erase("duration"); },
@@ -78,7 +88,14 @@ const std::vector<BadCase>& bad_cases() {
       {"ChangeWithoutSet", [](Json& d) { d["stages"][1].erase("set"); },
        {"stages[1].set: missing (required for a material-change stage)"}},
       {"ChangeOfUnknownProperty", [](Json& d) { d["stages"][1]["set"]["density"] = 1000; },
-       {"stages[1].set.density: unknown key (allowed: cohesion, friction_angle, dilation_angle, "
+       {"stages[1].set.density: unknown key for mohr-coulomb material \"soil\" (allowed: cohesion, "
+        "friction_angle, dilation_angle, youngs_modulus, poisson_ratio)"}},
+      {"ChangeOfCohesionOfElasticMaterial",
+       [](Json& d) {
+         d["stages"][1]["material"] = "house";
+         d["stages"][1]["set"] = {{"cohesion", 0}};
+       },
+       {"stages[1].set.cohesion: unknown key for linear-elastic material \"house\" (allowed: "
         "youngs_modulus, poisson_ratio)"}},
       {"UnknownStageType", [](Json& d) { d["stages"][2]["type"] = "quake"; },
        {"stages[2].type = \"quake\": expected one of \"gravity\", \"material-change\", "
@@ -88,9 +105,9 @@ const std::vector<BadCase>& bad_cases() {
       {"UnknownMaterialInStage", [](Json& d) { d["stages"][1]["material"] = "clay"; },
        {"stages[1].material = \"clay\": expected the name of a material in materials"}},
       {"DuplicateStageName", [](Json& d) { d["stages"][2]["name"] = "settle"; },
-       {"stages[2].name = \"settle\": expected a name no other stage has"}},
+       {"stages[2].name = \"settle\": expected a name no other stage has (stages[0] has it)"}},
       {"DuplicateBodyName", [](Json& d) { d["bodies"][2]["name"] = "slope"; },
-       {"bodies[2].name = \"slope\": expected a name no other body has"}},
+       {"bodies[2].name = \"slope\": expected a name no other body has (bodies[1] has it)"}},
       {"DilationAboveFriction", [](Json& d) { d["materials"]["soil"]["dilation_angle"] = 35; },
        {"materials.soil.dilation_angle = 35: expected a number in [0, 30]"}},
       {"DilationAboveFrictionAfterChange",
@@ -111,12 +128,15 @@ const std::vector<BadCase>& bad_cases() {
         "stage"}},
       {"FrameStageIsMaterialChange", [](Json& d) { d["output"]["frame_stages"] = {"trigger"}; },
        {"output.frame_stages[0] = \"trigger\": expected the name of a gravity or dynamic stage"}},
+      {"FrameStageTwice", [](Json& d) { d["output"]["frame_stages"] = {"slide", "settle", "slide"}; },
+       {"output.frame_stages[2] = \"slide\": expected each stage once"}},
       {"OverPointBudget",
        [](Json& d) {
          d["grid"]["cell_size"] = 0.01;
          d["grid"]["points_per_cell"] = 4;
        },
-       {"grid = ", "expected at most 2e+07 points"}},
+       {"grid = ", "expected at most 20000000 points (body area / (cell_size / points_per_cell)^2); "
+                   "the bodies need about 103040000"}},
       {"HugeCoordinatesOverPointBudget",
        [](Json& d) {
          // About 1.6e9 points, though the area in square metres overflows.
@@ -125,9 +145,10 @@ const std::vector<BadCase>& bad_cases() {
          d["bodies"] = {{{"name", "all"}, {"material", "soil"},
                          {"rectangle", {{"min", {0, 0}}, {"max", {1e200, 1e200}}}}}};
        },
-       {"grid = ", "expected at most 2e+07 points"}},
+       {"grid = ", "expected at most 20000000 points"}},
       {"OverGridBudget", [](Json& d) { d["grid"]["cell_size"] = 0.001; },
-       {"grid.cell_size = 0.001: expected a grid of at most 5e+07 nodes"}},
+       {"grid.cell_size = 0.001: expected a grid of at most 50000000 nodes; this domain, cell size "
+        "and padding need about 1600"}},
       {"MinTimeAfterDuration", [](Json& d) { d["stages"][2]["stop_at_rest"]["min_time"] = 31; },
        {"stages[2].stop_at_rest.min_time = 31: expected a number in [0, 30]"}},
       {"MaterialNotAnObject", [](Json& d) { d["materials"]["soil"] = "sand"; },
@@ -175,8 +196,13 @@ std::string message_of(const std::function<void()>& f) {
 TEST(ScenarioErrorsText, InvalidJsonSyntax) {
   const std::string what =
       message_of([] { sim::parse_scenario("{\"name\": \"x\",}", "scn.json"); });
-  EXPECT_EQ(what.rfind("scn.json: invalid JSON: ", 0), 0u) << what;
-  EXPECT_NE(what.find("line 1"), std::string::npos) << what;
+  EXPECT_EQ(what, "scn.json: invalid JSON at line 1, column 14: syntax error while parsing object "
+                  "key - unexpected '}'; expected string literal");
+  // Lines and columns count from 1, as editors do.
+  const std::string third = message_of([] {
+    sim::parse_scenario("{\n  \"name\": \"x\",\n  \"grid\" 2\n}", "scn.json");
+  });
+  EXPECT_EQ(third.rfind("scn.json: invalid JSON at line 3, column 10: ", 0), 0u) << third;
 }
 
 TEST(ScenarioErrorsText, OverflowingNumberNamesItsPath) {
@@ -206,7 +232,7 @@ TEST(ScenarioErrorsText, KeyGivenTwice) {
 
 TEST(ScenarioErrorsText, EmptyText) {
   const std::string what = message_of([] { sim::parse_scenario("", "scn.json"); });
-  EXPECT_EQ(what.rfind("scn.json: invalid JSON: ", 0), 0u) << what;
+  EXPECT_EQ(what.rfind("scn.json: invalid JSON at line 1, column 1: ", 0), 0u) << what;
 }
 
 TEST(ScenarioErrorsText, MissingFile) {

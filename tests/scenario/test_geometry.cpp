@@ -2,6 +2,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
+#include <cmath>
+#include <optional>
 #include <vector>
 
 #include "sim/scenario_geometry.hpp"
@@ -171,6 +174,65 @@ TEST(GeometryPolygonsOverlap, Identical) {
   EXPECT_TRUE(sim::polygons_overlap(rect(0, 0, 1, 1), reversed(rect(0, 0, 1, 1))));
   const Polygon tri = {{0.1, 0.2}, {5, 0}, {3.7, 9.3}};
   EXPECT_TRUE(sim::polygons_overlap(tri, tri));
+}
+
+using Contact = std::optional<std::array<std::size_t, 2>>;
+
+Contact pair(std::size_t i, std::size_t j) { return std::array<std::size_t, 2>{i, j}; }
+
+TEST(GeometrySelfContact, NamesTheEdgesThatMeet) {
+  EXPECT_EQ(sim::polygon_self_contact(rect(0, 0, 1, 1)), std::nullopt);
+  // Bow tie: edge 0 (v0-v1) crosses edge 2 (v2-v3).
+  EXPECT_EQ(sim::polygon_self_contact({{0, 0}, {1, 1}, {1, 0}, {0, 1}}), pair(0, 2));
+  // Repeated vertex: edge 1 has no length.
+  EXPECT_EQ(sim::polygon_self_contact({{0, 0}, {1, 0}, {1, 0}, {1, 1}, {0, 1}}), pair(1, 1));
+  // Closed like a path: the last edge (v4-v0) has no length.
+  EXPECT_EQ(sim::polygon_self_contact({{0, 0}, {1, 0}, {1, 1}, {0, 1}, {0, 0}}), pair(4, 4));
+  // Vertex 3 lies on edge 0.
+  EXPECT_EQ(sim::polygon_self_contact({{0, 0}, {4, 0}, {4, 2}, {2, 0}, {0, 2}}), pair(0, 2));
+  EXPECT_EQ(sim::polygon_self_contact({{0, 0}, {1, 0}}), pair(0, 0));
+}
+
+TEST(GeometrySelfContact, SameAnswerWhereverThePolygonStarts) {
+  // Two crossings; the smaller pair of edge indices is named, so rotating the
+  // vertex list moves the answer with it.
+  const Polygon star = {{0, 0}, {4, 3}, {4, 0}, {0, 3}, {2, -1}};
+  const Contact first = sim::polygon_self_contact(star);
+  ASSERT_TRUE(first.has_value());
+  for (std::size_t shift = 1; shift < star.size(); ++shift) {
+    Polygon rotated(star.begin() + shift, star.end());
+    rotated.insert(rotated.end(), star.begin(), star.begin() + shift);
+    EXPECT_TRUE(sim::polygon_self_contact(rotated).has_value()) << shift;
+  }
+  EXPECT_EQ(sim::polygon_self_contact(star), first);  // deterministic
+}
+
+TEST(GeometrySelfContact, LongTerrainProfileIsSimpleAndQuick) {
+  // A 9997-vertex ground line closed along the base: the sweep compares
+  // each edge with its few neighbours in x only.
+  Polygon ground;
+  for (int i = 0; i <= 9996; ++i) ground.push_back({i * 0.01, 5 + std::sin(i * 0.01)});
+  ground.push_back({99.96, 0});
+  ground.push_back({0, 0});
+  EXPECT_TRUE(sim::polygon_is_simple(ground));
+  ground[5000][1] = -1;  // a spike through the base
+  EXPECT_FALSE(sim::polygon_is_simple(ground));
+}
+
+TEST(GeometryPolygonsOverlap, BoxesThatOnlyTouchOrInterlock) {
+  // Boxes sharing only an edge: no overlap, decided from the boxes alone.
+  EXPECT_FALSE(sim::polygons_overlap(rect(0, 0, 1, 1), rect(1, -5, 3, 5)));
+  // Two interlocking L shapes: their boxes overlap, they do not.
+  const Polygon l1 = {{0, 0}, {3, 0}, {3, 1}, {1, 1}, {1, 3}, {0, 3}};
+  const Polygon l2 = {{1, 1}, {3, 1}, {3, 3}, {1, 3}};  // fills the notch
+  EXPECT_FALSE(sim::polygons_overlap(l1, l2));
+  EXPECT_FALSE(sim::polygons_overlap(l2, l1));
+  const Polygon l3 = {{0.5, 1}, {3, 1}, {3, 3}, {0.5, 3}};  // reaches into the upright
+  EXPECT_TRUE(sim::polygons_overlap(l1, l3));
+  EXPECT_TRUE(sim::polygons_overlap(l3, l1));
+  // Degenerate inputs are never said to overlap.
+  EXPECT_FALSE(sim::polygons_overlap({}, rect(0, 0, 1, 1)));
+  EXPECT_FALSE(sim::polygons_overlap({{0, 0}, {1, 1}}, rect(0, 0, 1, 1)));
 }
 
 }  // namespace
