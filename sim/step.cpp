@@ -43,24 +43,17 @@ namespace {
 void sort_into_bands(World& w) {
   Grid& g = w.grid;
   const int n = static_cast<int>(w.points.size());
-  const int width = g.i_end - g.i_begin;
-  const int bins = width * (g.j_end - g.j_begin);
-  w.bin_count.assign(static_cast<std::size_t>(bins) + 1, 0);
-  for (int p = 0; p < n; ++p) {
-    const Stencil& st = w.stencils[p];
-    ++w.bin_count[(st.base_j - g.j_begin) * width + (st.base_i - g.i_begin) + 1];
-  }
-  for (int b = 0; b < bins; ++b) w.bin_count[b + 1] += w.bin_count[b];
+  const std::size_t bins = static_cast<std::size_t>(g.nx) * g.ny;
+  w.bin_count.assign(bins + 1, 0);
+  for (int p = 0; p < n; ++p) ++w.bin_count[w.bin_key[p] + 1];
+  for (std::size_t b = 0; b < bins; ++b) w.bin_count[b + 1] += w.bin_count[b];
   const int rows = g.j_end - g.j_begin;
   const int bands = (rows + kBandRows - 1) / kBandRows;
   w.band_start.resize(static_cast<std::size_t>(bands) + 1);
   for (int b = 0; b <= bands; ++b)
-    w.band_start[b] = w.bin_count[std::min(b * kBandRows, rows) * width];
+    w.band_start[b] = w.bin_count[g.node(0, g.j_begin + std::min(b * kBandRows, rows))];
   w.order.resize(n);
-  for (int p = 0; p < n; ++p) {
-    const Stencil& st = w.stencils[p];
-    w.order[w.bin_count[(st.base_j - g.j_begin) * width + (st.base_i - g.i_begin)]++] = p;
-  }
+  for (int p = 0; p < n; ++p) w.order[w.bin_count[w.bin_key[p]]++] = p;
 }
 
 // Runs add(p) for every point, band by band: even bands in parallel, then odd
@@ -83,6 +76,7 @@ void locate_points(World& w) {
   Grid& g = w.grid;
   const int n = static_cast<int>(pts.size());
   w.stencils.resize(n);
+  w.bin_key.resize(n);
   int bad = n, i_lo = g.nx, i_hi = -1, j_lo = g.ny, j_hi = -1;
 #pragma omp parallel for schedule(static) reduction(min : bad, i_lo, j_lo) reduction(max : i_hi, j_hi)
   for (int p = 0; p < n; ++p) {
@@ -94,6 +88,7 @@ void locate_points(World& w) {
       bad = std::min(bad, p);
       continue;
     }
+    w.bin_key[p] = g.node(st.base_i, st.base_j);
     i_lo = std::min(i_lo, st.base_i);
     i_hi = std::max(i_hi, st.base_i);
     j_lo = std::min(j_lo, st.base_j);

@@ -30,6 +30,7 @@ struct World {
 
   // Scratch, rebuilt every step.
   std::vector<Stencil> stencils;  // per point
+  std::vector<int> bin_key;       // per point: grid index of its stencil's base node
   std::vector<int> order;         // points sorted by their stencil's base node
   std::vector<int> band_start;    // order[band_start[b] .. band_start[b+1]) is band b
   std::vector<int> bin_count;     // counting-sort workspace
