@@ -241,10 +241,18 @@ Scenario parse_scenario(const std::string& text, const std::string& label) {
 Scenario load_scenario(const std::string& path) {
   std::error_code ec;  // a directory opens as a stream and then reads as empty text
   if (std::filesystem::is_directory(path, ec)) fail_at(path, "cannot read file: it is a directory");
+  // A scenario is kilobytes; a path to something huge is a mistake, and
+  // reading it whole would only exhaust memory.
+  constexpr std::uintmax_t kMaxBytes = 64u << 20;
+  const std::uintmax_t size = std::filesystem::file_size(path, ec);
+  if (!ec && size > kMaxBytes)
+    fail_at(path, "cannot read file: it is " + std::to_string(size >> 20) +
+                      " MiB (a scenario is at most 64 MiB)");
   std::ifstream in(path, std::ios::binary);
   if (!in) fail_at(path, "cannot read file: " + std::string(std::strerror(errno)));
   std::ostringstream text;
   text << in.rdbuf();
+  if (in.bad()) fail_at(path, "cannot read file: " + std::string(std::strerror(errno)));
   return parse_scenario(text.str(), path);
 }
 

@@ -6,6 +6,8 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <filesystem>
+#include <fstream>
 #include <functional>
 #include <string>
 #include <vector>
@@ -203,6 +205,22 @@ TEST(ScenarioLimits, TokenSoupNeverEscapesAsAnythingElse) {
       ADD_FAILURE() << "not a ScenarioError for: " << text;
     }
   }
+}
+
+TEST(ScenarioLimits, HugeFileIsNotReadWhole) {
+  // A sparse file: 65 MiB long, no disk used.
+  const std::filesystem::path path =
+      std::filesystem::temp_directory_path() / "landslide-scenario-huge.json";
+  { std::ofstream(path.string()) << "{"; }
+  std::filesystem::resize_file(path, 65u << 20);
+  std::string what;
+  try {
+    sim::load_scenario(path.string());
+  } catch (const sim::ScenarioError& e) {
+    what = e.what();
+  }
+  std::filesystem::remove(path);
+  EXPECT_EQ(what, path.string() + ": cannot read file: it is 65 MiB (a scenario is at most 64 MiB)");
 }
 
 }  // namespace
