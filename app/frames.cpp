@@ -382,9 +382,8 @@ FrameRecorder::FrameRecorder(const sim::Scenario& scenario, fs::path out_dir)
 
 fs::path FrameRecorder::frames_dir(Field f) const { return out_ / "frames" / field_name(f); }
 
-// Frames of an earlier run into the same directory would otherwise join this
-// run's video; only our own numbered files are removed.
-void FrameRecorder::clear_old_frames() {
+void FrameRecorder::start() {
+  if (started_) return;
   static const std::regex numbered(R"(\d{6}\.png)");
   for (const Field f : fields_) {
     const fs::path dir = frames_dir(f);
@@ -393,7 +392,7 @@ void FrameRecorder::clear_old_frames() {
       if (e.is_regular_file() && std::regex_match(e.path().filename().string(), numbered))
         fs::remove(e.path());
   }
-  cleared_ = true;
+  started_ = true;
 }
 
 void FrameRecorder::capture(const sim::World& world, double stage_time, int number,
@@ -402,7 +401,7 @@ void FrameRecorder::capture(const sim::World& world, double stage_time, int numb
 }
 
 int FrameRecorder::paint_pending() {
-  if (!cleared_) clear_old_frames();
+  start();
   int written = 0;
   for (std::size_t k = 0; k < fields_.size(); ++k) {
     const Range range = field_range(styles_[k], frames_, k);
@@ -416,15 +415,17 @@ int FrameRecorder::paint_pending() {
   }
   frames_.clear();
   frames_.shrink_to_fit();
+  written_ += written;
   return written;
 }
 
 std::vector<render::VideoFiles> FrameRecorder::encode_videos() {
   std::vector<render::VideoFiles> files;
+  if (written_ == 0) return files;
   const render::VideoOptions options = video_options(scenario_.output.frame_interval);
   for (const Field f : fields_) {
     const fs::path dir = frames_dir(f);
-    if (render::count_frames(dir.string()) == 0) continue;
+    if (render::count_frames(dir.string()) < 2) continue;  // no video of a single frame
     files.push_back(render::encode_video(dir.string(), out_.string(), field_name(f), options));
   }
   return files;

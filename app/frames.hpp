@@ -139,26 +139,30 @@ class FrameRecorder {
   // Sets up the painter (throws render::Error). Check ffmpeg before.
   FrameRecorder(const sim::Scenario& scenario, std::filesystem::path out_dir);
 
+  // Creates DIR/frames/<field>/ and removes numbered PNGs an earlier run
+  // left there (they would join this run's videos). Call once the output
+  // directory exists; paint_pending() calls it if nobody did.
+  void start();
   void capture(const sim::World& world, double stage_time, int number, const std::string& stage);
   std::size_t pending() const { return frames_.size(); }
   // Paints the captured frames with their own ranges, writes the PNGs and
   // frees the frames. Returns the number of PNG files written.
   int paint_pending();
-  // mp4 + gif of each field from every frame written so far.
+  // mp4 + gif of each field from every frame this run wrote (none if it
+  // painted fewer than two frames).
   std::vector<render::VideoFiles> encode_videos();
   std::filesystem::path frames_dir(Field f) const;
   const std::vector<Field>& fields() const { return fields_; }
 
  private:
-  void clear_old_frames();
-
   const sim::Scenario& scenario_;
   std::filesystem::path out_;
   std::vector<Field> fields_;
   std::vector<FieldStyle> styles_;
   FramePainter painter_;
   std::vector<Frame> frames_;
-  bool cleared_ = false;
+  bool started_ = false;
+  int written_ = 0;
 };
 
 // Materials in force during `stage` (its name; "" for after every change):

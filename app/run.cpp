@@ -36,6 +36,7 @@ class RunObserver : public sim::Observer {
     for (const sim::StageSpec& s : scenario.stages)
       if (s.type != sim::StageType::MaterialChange && paints(scenario, s))
         last_painted_stage_ = s.name;
+    if (recorder_) recorder_->start();
   }
 
   void stage_begins(const sim::Simulation&, const sim::StageSpec& stage) override {

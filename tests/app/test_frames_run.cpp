@@ -91,6 +91,10 @@ class RunFrames : public ::testing::Test {
     out_ = root_ / "out";
     ffmpeg_ = render::ffmpeg_available(nullptr);
     if (!ffmpeg_) return;
+    // Left by an "earlier run" with more frames: must not join this run's video.
+    fs::create_directories(out_ / "frames" / "velocity");
+    std::ofstream(out_ / "frames" / "velocity" / frame_name(kFrames)) << "stale";
+    std::ofstream(out_ / "frames" / "velocity" / "notes.txt") << "not ours";
     app::RunOptions o;
     o.scenario = scenario_.string();
     o.out_dir = out_.string();
@@ -123,6 +127,11 @@ TEST_F(RunFrames, NumberedPngsPerFieldAtTheImageSize) {
       EXPECT_EQ(img.height(), 180);
     }
   }
+}
+
+TEST_F(RunFrames, StaleFramesOfAnEarlierRunAreRemoved) {
+  EXPECT_FALSE(fs::exists(out_ / "frames" / "velocity" / frame_name(kFrames)));
+  EXPECT_TRUE(fs::exists(out_ / "frames" / "velocity" / "notes.txt"));
 }
 
 TEST_F(RunFrames, FramesChangeWhileTheBlockMoves) {
@@ -256,6 +265,30 @@ TEST(RunCommand, RefusesToPaintWithoutFfmpegBeforeSimulating) {
   ::setenv("PATH", saved.c_str(), 1);
   EXPECT_EQ(status, app::kExitBadInput);
   EXPECT_FALSE(fs::exists(root / "out"));
+  fs::remove_all(root);
+}
+
+// A time step above the stable bound fails the first step, after frame 0
+// was captured: that frame is still painted (one frame makes no video).
+TEST(RunCommand, FailedRunStillPaintsWhatItCaptured) {
+  if (!render::ffmpeg_available(nullptr)) GTEST_SKIP() << "ffmpeg is not available";
+  const fs::path root =
+      fs::temp_directory_path() / ("landslide-app-failed-" + std::to_string(::getpid()));
+  fs::remove_all(root);
+  fs::create_directories(root);
+  std::string scene = kScene;
+  const std::string courant = R"("time_step": {"courant": 0.5})";
+  scene.replace(scene.find(courant), courant.size(), R"("time_step": {"fixed": 0.5})");
+  std::ofstream(root / "unstable.json") << scene;
+  app::RunOptions o;
+  o.scenario = (root / "unstable.json").string();
+  o.out_dir = (root / "out").string();
+  o.threads = 1;
+  EXPECT_EQ(app::run_command(o), app::kExitFailed);
+  EXPECT_TRUE(fs::is_regular_file(root / "out" / "frames" / "material" / frame_name(0)));
+  EXPECT_FALSE(fs::exists(root / "out" / "material.mp4"));
+  EXPECT_TRUE(fs::is_regular_file(root / "out" / "summary.json"));
+  EXPECT_EQ(temporaries(root), std::vector<std::string>{});
   fs::remove_all(root);
 }
 
