@@ -205,9 +205,14 @@ int run_command(const RunOptions& options) {
     }
   }
   std::unique_ptr<sim::Simulation> simulation;
+  try {
+    simulation = std::make_unique<sim::Simulation>(scenario);  // seeds the points
+  } catch (const sim::ScenarioError& e) {  // e.g. a body that holds no point
+    std::cerr << "error: " << e.what() << '\n';
+    return kExitBadInput;
+  }
   std::unique_ptr<RunObserver> observer;
   try {
-    simulation = std::make_unique<sim::Simulation>(scenario);
     fs::create_directories(out);
     std::cerr << "landslide " << LANDSLIDE_VERSION << ": " << scenario.name << ", "
               << simulation->world().points.size() << " points, h = " << scenario.cell_size
