@@ -74,11 +74,15 @@ std::string domain_text(const Scenario& s) {
   return text.str();
 }
 
-// A body vertex, which must lie inside the walls (to round-off of the domain's size).
+// Distances below this are round-off: 1e-9 of the domain's larger extent.
+double round_off(const Scenario& s) {
+  return 1e-9 * std::max(s.domain_max[0] - s.domain_min[0], s.domain_max[1] - s.domain_min[1]);
+}
+
+// A body vertex, which must lie inside the walls (to round-off).
 Vec2 vertex(const Node& node, const Scenario& s) {
   const Vec2 v = vec2(node);
-  const double tol = 1e-9 * std::max(s.domain_max[0] - s.domain_min[0],
-                                     s.domain_max[1] - s.domain_min[1]);
+  const double tol = round_off(s);
   if (v[0] < s.domain_min[0] - tol || v[0] > s.domain_max[0] + tol ||
       v[1] < s.domain_min[1] - tol || v[1] > s.domain_max[1] + tol)
     fail(node, "a point inside the domain " + domain_text(s));
@@ -154,7 +158,8 @@ void parse_bodies(const Node& node, Scenario& s) {
                " vertices in all bodies together (this body brings them to " +
                std::to_string(vertices) + ")");
     for (std::size_t k = 0; k < i; ++k) {
-      if (s.bodies[k].material != b.material && polygons_overlap(s.bodies[k].polygon, b.polygon))
+      if (s.bodies[k].material != b.material &&
+          polygons_overlap(s.bodies[k].polygon, b.polygon, round_off(s)))
         fail_at(node.file, body.path + " (" + b.name + ") overlaps bodies[" + std::to_string(k) +
                                "] (" + s.bodies[k].name + ") of a different material");
     }

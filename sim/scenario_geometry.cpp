@@ -27,10 +27,17 @@ bool segments_touch(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) 
          (d3 == 0 && on_segment(c, a, b)) || (d4 == 0 && on_segment(d, a, b));
 }
 
-// Segments cross at a point inside both.
-bool segments_cross(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) {
-  return sign(cross(c, d, a)) * sign(cross(c, d, b)) < 0 &&
-         sign(cross(a, b, c)) * sign(cross(a, b, d)) < 0;
+// Segments cross at a point inside both, each passing more than `tol` beyond
+// the other's line at both ends.
+bool segments_cross(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d, double tol) {
+  const double ca = cross(c, d, a), cb = cross(c, d, b), cc = cross(a, b, c), cd = cross(a, b, d);
+  if (!(sign(ca) * sign(cb) < 0 && sign(cc) * sign(cd) < 0)) return false;
+  if (tol <= 0) return true;
+  // |cross| / length is the distance from the line.
+  const double t2 = tol * tol;
+  const double cd2 = (d[0] - c[0]) * (d[0] - c[0]) + (d[1] - c[1]) * (d[1] - c[1]);
+  const double ab2 = (b[0] - a[0]) * (b[0] - a[0]) + (b[1] - a[1]) * (b[1] - a[1]);
+  return ca * ca > t2 * cd2 && cb * cb > t2 * cd2 && cc * cc > t2 * ab2 && cd * cd > t2 * ab2;
 }
 
 // Points just inside `poly` next to the middle of each edge.
@@ -162,7 +169,7 @@ std::optional<std::array<std::size_t, 2>> polygon_self_contact(const std::vector
 
 bool polygon_is_simple(const std::vector<Vec2>& poly) { return !polygon_self_contact(poly); }
 
-bool polygons_overlap(const std::vector<Vec2>& a, const std::vector<Vec2>& b) {
+bool polygons_overlap(const std::vector<Vec2>& a, const std::vector<Vec2>& b, double tolerance) {
   if (a.size() < 3 || b.size() < 3) return false;
   const Box ba = box_of(a), bb = box_of(b);
   // Regions that share positive area have boxes that share positive area.
@@ -171,7 +178,8 @@ bool polygons_overlap(const std::vector<Vec2>& a, const std::vector<Vec2>& b) {
   const std::vector<std::size_t> ea = edges_meeting(a, bb), eb = edges_meeting(b, ba);
   for (std::size_t i : ea)
     for (std::size_t j : eb)
-      if (segments_cross(a[i], a[(i + 1) % a.size()], b[j], b[(j + 1) % b.size()])) return true;
+      if (segments_cross(a[i], a[(i + 1) % a.size()], b[j], b[(j + 1) % b.size()], tolerance))
+        return true;
   // No edges cross: either one holds the other, they coincide, or they are
   // apart or only touch. Points just inside each edge tell these apart.
   for (const Vec2& p : inner_probes(a))

@@ -31,6 +31,11 @@ std::optional<std::array<std::size_t, 2>> polygon_self_contact(const std::vector
 
 // The two simple polygons share a region of positive area (touching along an
 // edge or at a vertex does not count).
-bool polygons_overlap(const std::vector<Vec2>& a, const std::vector<Vec2>& b);
+// With a `tolerance` (a distance), edges that pass within it of each other's
+// ends count as touching, so bodies built from rounded coordinates that were
+// meant to touch do not overlap by round-off; overlaps deeper than about
+// 1e-7 of the coordinates' size are always found.
+bool polygons_overlap(const std::vector<Vec2>& a, const std::vector<Vec2>& b,
+                      double tolerance = 0);
 
 }  // namespace sim

@@ -235,4 +235,26 @@ TEST(GeometryPolygonsOverlap, BoxesThatOnlyTouchOrInterlock) {
   EXPECT_FALSE(sim::polygons_overlap({{0, 0}, {1, 1}}, rect(0, 0, 1, 1)));
 }
 
+TEST(GeometryPolygonsOverlap, RoundOffWithinTheToleranceIsTouching) {
+  const Polygon slope = {{0, 0}, {55.87, 0}, {43.95, 10}, {0, 10}};
+  const Polygon sunk_by_round_off = rect(35.95, 10 - 1e-12, 41.95, 14);
+  EXPECT_TRUE(sim::polygons_overlap(slope, sunk_by_round_off));  // exact by default
+  EXPECT_FALSE(sim::polygons_overlap(slope, sunk_by_round_off, 1e-9));
+  EXPECT_FALSE(sim::polygons_overlap(sunk_by_round_off, slope, 1e-9));
+  // Deeper than the tolerance: found, however small.
+  for (double depth : {1e-8, 1e-6, 1e-3, 1.0}) {
+    const Polygon sunk = rect(35.95, 10 - depth, 41.95, 14);
+    EXPECT_TRUE(sim::polygons_overlap(slope, sunk, 1e-9)) << depth;
+    EXPECT_TRUE(sim::polygons_overlap(sunk, slope, 1e-9)) << depth;
+  }
+  // Strips stacked at i * t meet at coordinates that differ in the last bit.
+  const double t = 5.0 / 1000;
+  for (int i = 1; i < 1000; i += 7) {
+    const Polygon lower = {{0, (i - 1) * t}, {90, (i - 1) * t + 9}, {90, (i - 1) * t + 9 + t},
+                           {0, (i - 1) * t + t}};
+    const Polygon upper = {{0, i * t}, {90, i * t + 9}, {90, i * t + 9 + t}, {0, i * t + t}};
+    EXPECT_FALSE(sim::polygons_overlap(lower, upper, 1e-9)) << i;
+  }
+}
+
 }  // namespace

@@ -239,4 +239,14 @@ TEST(ScenarioParse, ReadmeExampleIsValid) {
   EXPECT_EQ(s.stages.size(), 3u);
 }
 
+TEST(ScenarioParse, RoundOffOverlapOfDifferentMaterialsCountsAsTouching) {
+  // The house computed 1e-12 m into the slope's top is still standing on it;
+  // 1e-6 m into it is an overlap (the domain is 80 m: round-off is 8e-8 m).
+  nlohmann::json doc = example_json();
+  doc["bodies"][2]["rectangle"]["min"] = {30, 12 - 1e-12};
+  EXPECT_NO_THROW(parse(doc));
+  doc["bodies"][2]["rectangle"]["min"] = {30, 12 - 1e-6};
+  EXPECT_THROW(parse(doc), sim::ScenarioError);
+}
+
 }  // namespace
