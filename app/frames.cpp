@@ -208,6 +208,14 @@ FieldStyle field_style(Field f, const sim::Scenario& scenario) {
       break;
     }
   }
+  // A range the scenario gives (SI units) holds for every frame of the run.
+  const auto given = scenario.output.ranges.find(field_name(f));
+  if (given != scenario.output.ranges.end() && !s.categorical) {
+    const double scale = f == Field::StressYY ? 1e-3 : 1.0;  // painted in kPa
+    s.fixed_range = true;
+    s.lo = given->second[0] * scale;
+    s.hi = given->second[1] * scale;
+  }
   return s;
 }
 

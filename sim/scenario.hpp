@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <map>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -81,6 +82,9 @@ struct OutputSpec {
   std::string displacement_reference = "initial";  // "initial" | "stage-start"
   std::string vtk = "none";               // "none" | "stage-end" | "frames"
   std::array<int, 2> image_size = {1280, 720};
+  // Colour range per field, SI units; a field not named here is painted with
+  // its range over each painted stage.
+  std::map<std::string, std::array<double, 2>> ranges;
 };
 
 struct Scenario {

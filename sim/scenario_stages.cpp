@@ -118,7 +118,7 @@ std::vector<StageSpec> parse_stages(const Node& node, const std::vector<Material
 }
 
 OutputSpec parse_output(const Node& node, const std::vector<StageSpec>& stages) {
-  require_object(node, {"frame_interval", "frame_stages", "fields", "colour_map",
+  require_object(node, {"frame_interval", "frame_stages", "fields", "colour_map", "ranges",
                         "displacement_reference", "vtk", "image_size"});
   OutputSpec o;
   if (node.has("frame_interval")) {
@@ -161,6 +161,18 @@ OutputSpec parse_output(const Node& node, const std::vector<StageSpec>& stages) 
     }
   } else {
     o.fields = {"displacement-x"};
+  }
+  if (node.has("ranges")) {
+    const Node ranges = node.at("ranges");
+    require_object(ranges, {"displacement-x", "displacement-y", "relative-yield", "stress-yy",
+                            "velocity"});
+    for (const auto& item : ranges.value.items()) {
+      const Node r = ranges.at(item.key());
+      if (!r.value.is_array() || r.value.size() != 2) fail(r, "[low, high], low < high");
+      const Vec2 lh = vec2(r);
+      if (!(lh[0] < lh[1])) fail(r, "[low, high], low < high");
+      o.ranges[item.key()] = {lh[0], lh[1]};
+    }
   }
   if (node.has("colour_map")) o.colour_map = one_of(node.at("colour_map"), {"viridis", "jet"});
   if (node.has("displacement_reference"))

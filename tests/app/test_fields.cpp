@@ -186,6 +186,20 @@ TEST(FieldRange, PerFieldRules) {
   EXPECT_TRUE(app::field_style(Field::Material, s).categorical);
 }
 
+TEST(FieldRange, ScenarioRangesHoldForEveryFrame) {
+  sim::Scenario s;
+  s.materials = {soil(), house()};
+  s.output.ranges["displacement-x"] = {-5.0, 30.0};
+  s.output.ranges["stress-yy"] = {-200e3, 0.0};  // Pa in the scenario, painted in kPa
+  const std::vector<app::Frame> frames = {values_frame({1.0f, 2.0f})};
+  auto range = [&](Field f) { return app::field_range(app::field_style(f, s), frames, 0); };
+  EXPECT_EQ(range(Field::DisplacementX).lo, -5.0);
+  EXPECT_EQ(range(Field::DisplacementX).hi, 30.0);
+  EXPECT_EQ(range(Field::StressYY).lo, -200.0);
+  EXPECT_EQ(range(Field::StressYY).hi, 0.0);
+  EXPECT_EQ(range(Field::Velocity).hi, 2.0);  // not given: range of the frames
+}
+
 TEST(FieldRange, EmptyOrFlatRangesAreWidened) {
   const sim::Scenario s;
   const app::FieldStyle disp = app::field_style(Field::DisplacementX, s);
