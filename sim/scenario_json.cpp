@@ -265,6 +265,11 @@ Json parse_text(const std::string& text, const std::string& file) {
 double number(const Node& node, double lo, Bound lo_kind, double hi, Bound hi_kind) {
   const std::string range = (lo_kind == Bound::Closed ? "[" : "(") + format_bound(lo) + ", " +
                             format_bound(hi) + (hi_kind == Bound::Closed ? "]" : ")");
+  if (std::isinf(lo) && std::isinf(hi)) {  // any coordinate
+    if (!node.value.is_number() || !std::isfinite(node.value.get<double>()))
+      fail(node, "a finite number");
+    return node.value.get<double>();
+  }
   if (!node.value.is_number()) fail(node, "a number in " + range);
   const double v = node.value.get<double>();
   if (!std::isfinite(v)) fail(node, "a finite number in " + range);

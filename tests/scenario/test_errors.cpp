@@ -53,7 +53,17 @@ const std::vector<BadCase>& bad_cases() {
         "damping, stop_at_rest)"}},
       {"UnknownOutputKey", [](Json& d) { d["output"]["format"] = "png"; },
        {"output.format: unknown key (allowed: frame_interval, frame_stages, fields, colour_map, "
-        "displacement_reference, vtk, image_size)"}},
+        "ranges, displacement_reference, vtk, image_size)"}},
+      {"RangeLowNotBelowHigh", [](Json& d) { d["output"]["ranges"] = {{"velocity", {2, 2}}}; },
+       {"output.ranges.velocity = [2,2]: expected [low, high], low < high"}},
+      {"RangeOfCategoricalField",
+       [](Json& d) { d["output"]["ranges"] = {{"material", {0, 1}}}; },
+       {"output.ranges.material: unknown key (allowed: displacement-x, displacement-y, "
+        "relative-yield, stress-yy, velocity)"}},
+      {"RangeNotANumber", [](Json& d) { d["output"]["ranges"] = {{"stress-yy", {"-1e5", 0}}}; },
+       {"output.ranges.stress-yy[0] = \"-1e5\": expected a finite number"}},
+      {"GravityOfBooleans", [](Json& d) { d["gravity"] = {true, -9.81}; },
+       {"gravity[0] = true: expected a finite number"}},
       {"UnknownBoundary", [](Json& d) { d["boundaries"]["left"] = "slip"; },
        {"boundaries.left = \"slip\": expected one of \"fixed\", \"roller\", \"free\""}},
       {"OverlapOfDifferentMaterials",

@@ -249,4 +249,14 @@ TEST(ScenarioParse, RoundOffOverlapOfDifferentMaterialsCountsAsTouching) {
   EXPECT_THROW(parse(doc), sim::ScenarioError);
 }
 
+TEST(ScenarioParse, OutputRanges) {
+  nlohmann::json doc = example_json();
+  doc["output"]["ranges"] = {{"stress-yy", {-2e5, 0}}, {"velocity", {0, 3.5}}};
+  const sim::Scenario s = parse(doc);
+  ASSERT_EQ(s.output.ranges.size(), 2u);
+  EXPECT_EQ(s.output.ranges.at("stress-yy"), (std::array<double, 2>{-2e5, 0}));
+  EXPECT_EQ(s.output.ranges.at("velocity"), (std::array<double, 2>{0, 3.5}));
+  EXPECT_TRUE(sim::parse_scenario(kExample, "scn.json").output.ranges.empty());
+}
+
 }  // namespace
