@@ -33,6 +33,8 @@ TEST(ScenarioDocs, CompleteExampleIsValid) {
   EXPECT_EQ(s.materials.size(), 3u);
   EXPECT_EQ(s.bodies.size(), 3u);
   EXPECT_EQ(s.stages.size(), 3u);
+  EXPECT_EQ(s.output.ranges.size(), 1u);  // every output key appears in the example
+  EXPECT_EQ(s.output.colour_map, "jet");
 }
 
 TEST(ScenarioDocs, CommittedScenesFollowTheDocumentedRules) {
