@@ -1,5 +1,6 @@
 // landslide: simulate a scenario (and paint it), check one, re-paint saved
 // states, compose a panel of frames.
+#include "landslide_version.hpp"
 #include <CLI/CLI.hpp>
 
 #include "app/commands.hpp"

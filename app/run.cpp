@@ -1,5 +1,6 @@
 // `landslide run` and `landslide check`: validate the whole scenario before
 // anything is written, then hand the time loop to sim::Simulation and listen.
+#include "landslide_version.hpp"
 #include <omp.h>
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+#include "landslide_version.hpp"
 #include "app/summary.hpp"
 
 #include <cmath>
