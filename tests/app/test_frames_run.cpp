@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <regex>
 #include <string>
 
@@ -222,6 +223,27 @@ TEST_F(RunFrames, RenderRefusesBadArguments) {
             app::kExitBadInput);
   EXPECT_FALSE(fs::exists(root_ / "bad"));
   EXPECT_FALSE(fs::exists(root_ / "bad.png"));
+}
+
+// Determinism: the same scene with two threads paints byte-identical PNGs.
+TEST_F(RunFrames, TwoThreadsPaintTheSamePngs) {
+  app::RunOptions o;
+  o.scenario = scenario_.string();
+  o.out_dir = (root_ / "out-two-threads").string();
+  o.threads = 2;
+  ASSERT_EQ(app::run_command(o), app::kExitOk);
+  auto bytes = [](const fs::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  for (const std::string& field : kFields)
+    for (int i = 0; i < kFrames; ++i) {
+      const fs::path one = out_ / "frames" / field / frame_name(i);
+      const fs::path two = fs::path(o.out_dir) / "frames" / field / frame_name(i);
+      const std::string a = bytes(one);
+      EXPECT_FALSE(a.empty()) << one;
+      EXPECT_EQ(a, bytes(two)) << one << " differs from " << two;
+    }
 }
 
 TEST_F(RunFrames, PanelOfFourFrames) {
