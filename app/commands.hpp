@@ -48,4 +48,13 @@ int panel_command(const PanelOptions& options);
 void write_panel(const std::vector<std::string>& images, const std::vector<std::string>& captions,
                  int cols, const std::string& title, const std::string& out);
 
+// `landslide gallery`: the paper's figures 5, 6, 9, 10, 11, 12 (PNG) and an
+// animation of the phi = 20 slide, regenerated from the committed scenarios.
+struct GalleryOptions {
+  std::string out;        // directory
+  std::string scenarios;  // "" : ./scenarios
+  bool quick = false;     // every run at h = 1.127 m (1648 points)
+};
+int gallery_command(const GalleryOptions& options);
+
 }  // namespace app

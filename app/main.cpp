@@ -52,6 +52,15 @@ int main(int argc, char** argv) {
   panel_cmd->add_option("--cols", panel.cols, "Images per row (default 2)")
       ->check(CLI::Range(1, 64));
 
+  app::GalleryOptions gallery;
+  CLI::App* gallery_cmd = cli.add_subcommand(
+      "gallery", "Regenerate the paper's figures (5, 6, 9-12) and the phi = 20 animation");
+  gallery_cmd->add_option("--out", gallery.out, "Output directory")->required();
+  gallery_cmd->add_option("--scenarios", gallery.scenarios,
+                          "Folder of the paper-slope scenarios (default: scenarios)");
+  gallery_cmd->add_flag("--quick", gallery.quick,
+                        "Every run at the 1648-point resolution (h = 1.127 m), for a fast check");
+
   try {
     cli.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -65,5 +74,6 @@ int main(int argc, char** argv) {
     return app::render_command(render);
   }
   if (*panel_cmd) return app::panel_command(panel);
+  if (*gallery_cmd) return app::gallery_command(gallery);
   return app::kExitBadInput;
 }

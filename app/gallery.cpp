@@ -1,0 +1,356 @@
+// `landslide gallery`: regenerates the paper's figures (5, 6, 9, 10, 11, 12)
+// and an animation of the phi = 20 slide from the committed scenarios. Each
+// scenario is run once; an observer keeps the states the figures need.
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "app/commands.hpp"
+#include "app/frames.hpp"
+#include "render/error.hpp"
+#include "render/font.hpp"
+#include "render/panel.hpp"
+#include "render/png_io.hpp"
+#include "render/video.hpp"
+#include "sim/simulation.hpp"
+
+namespace app {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point t) {
+  return std::chrono::duration<double>(Clock::now() - t).count();
+}
+
+// The fields every run keeps (values are captured for all of them).
+const std::vector<Field> kFields = {Field::DisplacementX, Field::StressYY, Field::RelativeYield};
+std::size_t field_index(Field f) {
+  for (std::size_t k = 0; k < kFields.size(); ++k)
+    if (kFields[k] == f) return k;
+  return 0;
+}
+
+// Slide times (s into the slide) the figures show.
+const std::vector<double> kSlideTimes = {3, 4, 8, 12, 16};
+
+struct RunResult {
+  sim::Scenario scenario;
+  std::size_t points = 0;
+  double wall = 0;
+  Frame gravity_end;
+  std::map<double, Frame> at;  // slide time -> state
+  Frame slide_end;
+  double slide_time = 0;
+  bool at_rest = false;
+  double runout = 0;
+  double max_ux = 0;
+  std::vector<render::VideoFiles> videos;
+};
+
+class GalleryObserver : public sim::Observer {
+ public:
+  GalleryObserver(RunResult& r, FrameRecorder* recorder) : r_(r), recorder_(recorder) {}
+
+  void frame(const sim::Simulation& sim, const sim::StageSpec& stage, int frame) override {
+    if (recorder_) recorder_->capture(sim.world(), sim.stage_time(), frame, stage.name);
+    if (stage.type != sim::StageType::Dynamic) return;
+    for (const double t : kSlideTimes)
+      if (std::abs(sim.stage_time() - t) < 1e-6)
+        r_.at[t] = capture_frame(sim.world(), kFields, frame, sim.stage_time(), stage.name);
+  }
+
+  void stage_ends(const sim::Simulation& sim, const sim::StageSpec& stage,
+                  const sim::StageResult& res) override {
+    if (stage.type == sim::StageType::Gravity)
+      r_.gravity_end = capture_frame(sim.world(), kFields, 0, sim.stage_time(), stage.name);
+    if (stage.type == sim::StageType::Dynamic) {
+      r_.slide_end = capture_frame(sim.world(), kFields, 0, sim.stage_time(), stage.name);
+      r_.slide_time = res.simulated_time;
+      r_.at_rest = res.ended_at_rest;
+      r_.runout = res.metrics.runout;
+      r_.max_ux = res.metrics.max_soil_ux;
+    }
+    if (recorder_ && recorder_->pending() > 0) recorder_->paint_pending();
+  }
+
+  void progress(const sim::Simulation& sim, const sim::StageSpec& stage, long steps) override {
+    if (Clock::now() - last_ < std::chrono::seconds(10)) return;
+    last_ = Clock::now();
+    std::cerr << "  " << sim.scenario().name << ": " << stage.name << " t = " << sim.stage_time()
+              << " s, " << steps << " steps\n";
+  }
+
+ private:
+  RunResult& r_;
+  FrameRecorder* recorder_;
+  Clock::time_point last_ = Clock::now();
+};
+
+std::string fmt(double v, int digits = 1) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", digits, v);
+  return buf;
+}
+
+class Gallery {
+ public:
+  Gallery(fs::path scenarios, fs::path out, bool quick)
+      : scenarios_(std::move(scenarios)), out_(std::move(out)), quick_(quick) {}
+
+  // Runs `file` (once; later calls return the same result).
+  RunResult& run(const std::string& file, bool animate = false) {
+    auto it = runs_.find(file);
+    if (it != runs_.end()) return *it->second;
+    auto r = std::make_unique<RunResult>();
+    r->scenario = sim::load_scenario((scenarios_ / file).string());
+    sim::Scenario& s = r->scenario;
+    if (quick_) s.cell_size = 1.127;
+    s.output.vtk = "none";
+    s.output.frame_interval = 0.5;
+    s.output.fields = {"displacement-x"};
+    s.output.ranges.clear();
+    // The domain is 116 m x 20 m: a low page keeps the panels free of empty bands.
+    s.output.image_size = {1280, 560};
+    std::vector<std::string> stages;
+    for (const sim::StageSpec& st : s.stages)
+      if (st.type == sim::StageType::Dynamic) stages.push_back(st.name);
+    s.output.frame_stages = stages;
+    std::unique_ptr<FrameRecorder> recorder;
+    const fs::path work = out_ / ".work" / s.name;
+    if (animate) {
+      recorder = std::make_unique<FrameRecorder>(s, work);
+      fs::create_directories(work);
+      recorder->start();
+    }
+    const auto start = Clock::now();
+    sim::Simulation simulation(s);
+    r->points = simulation.world().points.size();
+    std::cerr << "running " << s.name << " (" << r->points << " points, h = " << s.cell_size
+              << " m)\n";
+    GalleryObserver observer(*r, recorder.get());
+    simulation.run(observer);
+    r->wall = seconds_since(start);
+    std::cerr << "  " << s.name << ": " << fmt(r->wall) << " s wall, slide "
+              << fmt(r->slide_time) << " s" << (r->at_rest ? " (at rest)" : "") << ", runout "
+              << fmt(r->runout) << " m\n";
+    if (recorder) {
+      const auto v0 = Clock::now();
+      for (const render::VideoFiles& v : recorder->encode_videos()) {
+        const std::string base = "anim-" + s.name + "-displacement-x";
+        copy_atomically(v.mp4, out_ / (base + ".mp4"));
+        if (!v.gif.empty()) copy_atomically(v.gif, out_ / (base + ".gif"));
+        r->videos.push_back({(out_ / (base + ".mp4")).string(),
+                             v.gif.empty() ? "" : (out_ / (base + ".gif")).string()});
+      }
+      std::cerr << "  encoded the animation in " << fmt(seconds_since(v0)) << " s\n";
+      fs::remove_all(work);
+    }
+    run_wall_ += r->wall;
+    return *runs_.emplace(file, std::move(r)).first->second;
+  }
+
+  // One page: the panels of `field` from `frames`, one colour range over all.
+  void figure(const std::string& file, const std::string& title,
+              const std::vector<std::pair<const RunResult*, const Frame*>>& panels,
+              const std::vector<std::string>& captions, Field field) {
+    const std::size_t k = field_index(field);
+    const sim::Scenario& s0 = panels.front().first->scenario;
+    const FieldStyle style = field_style(field, s0);
+    std::vector<const std::vector<float>*> values;
+    for (const auto& p : panels) values.push_back(&p.second->values[k]);
+    const Range range = field_range(style, values);
+    std::vector<render::Image> images;
+    for (const auto& p : panels) {
+      const sim::Scenario& s = p.first->scenario;
+      Frame one = *p.second;
+      const render::FrameSpec spec = frame_spec(s, style, s.output.colour_map, range, one);
+      images.push_back(painter(s).paint(spec, one, k));
+    }
+    const int n = int(images.size());
+    const int cols = n >= 4 ? 2 : 1;
+    const int rows = (n + cols - 1) / cols;
+    render::Font font;
+    const render::Image page = render::compose_panel(font, images, captions, rows, cols, title);
+    render::write_png(page, (out_ / file).string());
+  }
+
+  double run_wall() const { return run_wall_; }
+  bool quick() const { return quick_; }
+
+ private:
+  FramePainter& painter(const sim::Scenario& s) {
+    if (!painter_)
+      painter_ = std::make_unique<FramePainter>(s.output.image_size[0], s.output.image_size[1]);
+    return *painter_;
+  }
+
+  static void copy_atomically(const fs::path& from, const fs::path& to) {
+    fs::path tmp = to;
+    tmp += ".tmp";
+    fs::copy_file(from, tmp, fs::copy_options::overwrite_existing);
+    fs::rename(tmp, to);
+  }
+
+  fs::path scenarios_, out_;
+  bool quick_;
+  std::map<std::string, std::unique_ptr<RunResult>> runs_;
+  std::unique_ptr<FramePainter> painter_;
+  double run_wall_ = 0;
+};
+
+// The state at slide time t, or the final state if the slide ended first.
+const Frame* state_at(const RunResult& r, double t, std::string& note) {
+  auto it = r.at.find(t);
+  if (it != r.at.end()) return &it->second;
+  note = " (at rest after " + fmt(r.slide_time) + " s: final state)";
+  return &r.slide_end;
+}
+
+std::string pts(const RunResult& r) { return std::to_string(r.points) + " points"; }
+
+}  // namespace
+
+int gallery_command(const GalleryOptions& o) {
+  if (o.out.empty()) {
+    std::cerr << "error: --out DIR is required\n";
+    return kExitBadInput;
+  }
+  const fs::path scenarios = o.scenarios.empty() ? fs::path("scenarios") : fs::path(o.scenarios);
+  for (const char* f : {"paper-slope-phi20.json", "paper-slope-phi25.json",
+                        "paper-slope-phi15.json", "paper-slope-phi10.json",
+                        "paper-slope-phi20-n1648.json", "paper-slope-phi20-n28724.json",
+                        "paper-slope-phi20-n67016.json"}) {
+    try {
+      sim::load_scenario((scenarios / f).string());
+    } catch (const sim::ScenarioError& e) {
+      std::cerr << "error: " << e.what() << " (--scenarios DIR names the scenarios folder)\n";
+      return kExitBadInput;
+    }
+  }
+  std::string why;
+  if (!render::ffmpeg_available(&why)) {
+    std::cerr << "error: the gallery's animation needs ffmpeg: " << why << '\n';
+    return kExitBadInput;
+  }
+  const fs::path out(o.out);
+  try {
+    FramePainter probe(64, 64);  // OSMesa and the font start
+  } catch (const std::exception& e) {
+    std::cerr << "error: cannot set up the off-screen painter: " << e.what() << '\n';
+    return kExitBadInput;
+  }
+  const auto total = Clock::now();
+  try {
+    fs::create_directories(out);
+    Gallery g(scenarios, out, o.quick);
+    const std::string q = o.quick ? " [quick: h = 1.127 m]" : "";
+    auto timed = [&](const std::string& name, auto&& make) {
+      const auto start = Clock::now();
+      const double runs_before = g.run_wall();
+      make();
+      const double wall = seconds_since(start);
+      std::cout << name << ": " << fmt(wall) << " s (simulating " << fmt(g.run_wall() - runs_before)
+                << " s, painting " << fmt(wall - (g.run_wall() - runs_before)) << " s)"
+                << std::endl;
+    };
+
+    timed("fig05-vertical-stress.png", [&] {
+      RunResult& r = g.run("paper-slope-phi20.json", true);
+      g.figure("fig05-vertical-stress.png",
+               "Fig. 5: vertical stress after the gravity stage, phi = 20 deg" + q,
+               {{&r, &r.gravity_end}},
+               {"sigma_yy [kPa] (tension positive) at the end of the 5 s gravity stage, " +
+                pts(r)},
+               Field::StressYY);
+    });
+    timed("fig06-horizontal-displacement.png", [&] {
+      RunResult& r = g.run("paper-slope-phi20.json", true);
+      g.figure("fig06-horizontal-displacement.png",
+               "Fig. 6: horizontal displacement after the gravity stage, phi = 20 deg" + q,
+               {{&r, &r.gravity_end}},
+               {"displacement-x [m] at the end of the 5 s gravity stage, " + pts(r) +
+                " (slope faces +x, mirrored from the paper)"},
+               Field::DisplacementX);
+    });
+    timed("fig09-slide-4-8-12-16s.png", [&] {
+      RunResult& r = g.run("paper-slope-phi20.json", true);
+      std::vector<std::pair<const RunResult*, const Frame*>> panels;
+      std::vector<std::string> caps;
+      for (double t : {4.0, 8.0, 12.0, 16.0}) {
+        std::string note;
+        panels.push_back({&r, state_at(r, t, note)});
+        caps.push_back(fmt(t, 0) + " s into the slide" + note);
+      }
+      g.figure("fig09-slide-4-8-12-16s.png",
+               "Fig. 9: horizontal displacement, phi = 20 deg, " + pts(r) +
+                   (o.quick ? q : " (paper: 40,038; fewer for run time on 2 cores)"),
+               panels, caps, Field::DisplacementX);
+    });
+    timed("fig10-relative-yield-3s.png", [&] {
+      RunResult& r = g.run("paper-slope-phi20.json", true);
+      std::string note;
+      const Frame* f = state_at(r, 3.0, note);
+      g.figure("fig10-relative-yield-3s.png",
+               "Fig. 10: relative yield 3 s into the slide, phi = 20 deg" + q, {{&r, f}},
+               {"0 hydrostatic, 1 on the yield surface, 2 yielded in the last step; house 0; " +
+                pts(r) + note},
+               Field::RelativeYield);
+    });
+    timed("fig11-resolutions.png", [&] {
+      std::vector<std::pair<const RunResult*, const Frame*>> panels;
+      std::vector<std::string> caps;
+      const std::vector<std::string> files =
+          o.quick ? std::vector<std::string>{"paper-slope-phi20.json"}
+                  : std::vector<std::string>{"paper-slope-phi20-n1648.json", "paper-slope-phi20.json",
+                                             "paper-slope-phi20-n28724.json",
+                                             "paper-slope-phi20-n67016.json"};
+      for (const std::string& f : files) {
+        RunResult& r = g.run(f, f == "paper-slope-phi20.json");
+        panels.push_back({&r, &r.slide_end});
+        caps.push_back(pts(r) + ", h = " + fmt(r.scenario.cell_size, 3) + " m: end at " +
+                       fmt(r.slide_time) + " s, runout " + fmt(r.runout) + " m");
+      }
+      g.figure("fig11-resolutions.png",
+               "Fig. 11: end of the slide at four resolutions, phi = 20 deg" + q, panels, caps,
+               Field::DisplacementX);
+    });
+    timed("fig12-friction-angles.png", [&] {
+      std::vector<std::pair<const RunResult*, const Frame*>> panels;
+      std::vector<std::string> caps;
+      for (const char* phi : {"25", "20", "15", "10"}) {
+        const std::string f = std::string("paper-slope-phi") + phi + ".json";
+        RunResult& r = g.run(f, f == "paper-slope-phi20.json");
+        panels.push_back({&r, &r.slide_end});
+        caps.push_back(std::string("phi = ") + phi + " deg, " + pts(r) + ": end at " +
+                       fmt(r.slide_time) + " s" + (r.at_rest ? " (at rest)" : "") +
+                       ", runout " + fmt(r.runout) + " m");
+      }
+      g.figure("fig12-friction-angles.png", "Fig. 12: end of the slide, four friction angles" + q,
+               panels, caps, Field::DisplacementX);
+    });
+    fs::remove_all(out / ".work");
+    std::cout << "animation: " << (out / "anim-paper-slope-phi20-displacement-x.mp4").string()
+              << ", " << (out / "anim-paper-slope-phi20-displacement-x.gif").string() << '\n';
+    std::cout << "gallery: " << fmt(seconds_since(total)) << " s in all -> " << out.string()
+              << std::endl;
+  } catch (const sim::ScenarioError& e) {
+    std::cerr << "error: " << e.what() << '\n';
+    return kExitBadInput;
+  } catch (const std::exception& e) {
+    std::cerr << "error: " << e.what() << '\n';
+    return kExitFailed;
+  }
+  return kExitOk;
+}
+
+}  // namespace app
