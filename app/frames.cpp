@@ -16,17 +16,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-struct FieldInfo {
-  Field field;
-  const char* name;
-};
-
-constexpr FieldInfo kFields[] = {
-    {Field::DisplacementX, "displacement-x"}, {Field::DisplacementY, "displacement-y"},
-    {Field::RelativeYield, "relative-yield"}, {Field::StressYY, "stress-yy"},
-    {Field::Velocity, "velocity"},            {Field::Material, "material"},
-};
-
 // A live world: displacement from ref_x/ref_y, volume = mass / density.
 struct WorldPoints {
   const sim::World& w;
@@ -141,84 +130,6 @@ std::string frame_file(int number) {
 
 }  // namespace
 
-const std::vector<std::string>& field_names() {
-  static const std::vector<std::string> names = [] {
-    std::vector<std::string> v;
-    for (const FieldInfo& f : kFields) v.emplace_back(f.name);
-    return v;
-  }();
-  return names;
-}
-
-Field parse_field(const std::string& name) {
-  for (const FieldInfo& f : kFields)
-    if (name == f.name) return f.field;
-  std::string known;
-  for (const std::string& n : field_names()) known += (known.empty() ? "" : ", ") + n;
-  throw std::invalid_argument("unknown field '" + name + "' (expected one of: " + known + ")");
-}
-
-std::string field_name(Field f) {
-  for (const FieldInfo& i : kFields)
-    if (i.field == f) return i.name;
-  return "?";
-}
-
-FieldStyle field_style(Field f, const sim::Scenario& scenario) {
-  FieldStyle s;
-  s.field = f;
-  switch (f) {
-    case Field::DisplacementX:
-      s.title = "horizontal displacement";
-      s.label = "horizontal displacement";
-      s.unit = "m";
-      break;
-    case Field::DisplacementY:
-      s.title = "vertical displacement";
-      s.label = "vertical displacement";
-      s.unit = "m";
-      break;
-    case Field::RelativeYield:
-      s.title = "relative yield";
-      s.label = "relative yield (2 = yielding)";
-      s.fixed_range = true;
-      s.lo = 0;
-      s.hi = 2;
-      break;
-    case Field::StressYY:
-      s.title = "vertical normal stress";
-      s.label = "vertical normal stress";
-      s.unit = "kPa";
-      break;
-    case Field::Velocity:
-      s.title = "speed";
-      s.label = "speed |v|";
-      s.unit = "m/s";
-      break;
-    case Field::Material: {
-      s.title = "material";
-      std::string names;
-      for (std::size_t m = 0; m < scenario.materials.size(); ++m)
-        names += (m ? ", " : "") + std::to_string(m) + " " + scenario.materials[m].name;
-      s.label = "material: " + names;
-      s.categorical = true;
-      s.fixed_range = true;
-      s.lo = 0;
-      s.hi = std::max<double>(1, double(scenario.materials.size()) - 1);
-      break;
-    }
-  }
-  // A range the scenario gives (SI units) holds for every frame of the run.
-  const auto given = scenario.output.ranges.find(field_name(f));
-  if (given != scenario.output.ranges.end() && !s.categorical) {
-    const double scale = f == Field::StressYY ? 1e-3 : 1.0;  // painted in kPa
-    s.fixed_range = true;
-    s.lo = given->second[0] * scale;
-    s.hi = given->second[1] * scale;
-  }
-  return s;
-}
-
 std::vector<double> field_values(Field f, const sim::World& world) {
   return values_of(f, WorldPoints{world});
 }
@@ -256,47 +167,6 @@ Frame capture_frame(const sim::PointState& state,
   return capture(StatePoints{state, materials}, fields, number, time, stage);
 }
 
-Range field_range(const FieldStyle& style, const std::vector<Frame>& frames, std::size_t k) {
-  std::vector<const std::vector<float>*> values;
-  for (const Frame& fr : frames)
-    if (k < fr.values.size()) values.push_back(&fr.values[k]);
-  return field_range(style, values);
-}
-
-Range field_range(const FieldStyle& style, const std::vector<const std::vector<float>*>& values) {
-  if (style.fixed_range) return Range{style.lo, style.hi};
-  double lo = std::numeric_limits<double>::infinity();
-  double hi = -lo;
-  for (const std::vector<float>* array : values) {
-    for (const float v : *array) {
-      if (!std::isfinite(v)) continue;
-      lo = std::min(lo, double(v));
-      hi = std::max(hi, double(v));
-    }
-  }
-  if (!(lo <= hi)) {  // no finite value at all
-    lo = 0;
-    hi = 1;
-  }
-  if (style.field == Field::DisplacementX || style.field == Field::DisplacementY) {
-    // Keep 0 in view: a slide moving one way still shows where nothing moved.
-    lo = std::min(lo, 0.0);
-    hi = std::max(hi, 0.0);
-  } else if (style.field == Field::Velocity) {
-    lo = 0;
-  }
-  const double scale = std::max({1.0, std::fabs(lo), std::fabs(hi)});
-  if (hi - lo <= 1e-9 * scale) {
-    if (lo == 0) {
-      hi = 1;
-    } else {
-      const double mid = 0.5 * (lo + hi), half = 0.5 * scale;
-      lo = mid - half;
-      hi = mid + half;
-    }
-  }
-  return Range{lo, hi};
-}
 
 Window frame_window(const sim::Scenario& s) {
   const double w = s.domain_max[0] - s.domain_min[0];
