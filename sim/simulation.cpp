@@ -28,9 +28,9 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 Simulation::Simulation(const Scenario& scenario)
     : scenario_(scenario), world_(make_world(scenario)) {
   // Without a gravity stage the body force acts in full from the start.
-  gravity_applied_ = std::none_of(scenario.stages.begin(), scenario.stages.end(),
+  const bool ramped = std::any_of(scenario.stages.begin(), scenario.stages.end(),
                                   [](const StageSpec& s) { return s.type == StageType::Gravity; });
-  gravity_factor_ = gravity_applied_ ? 1.0 : 0.0;
+  gravity_factor_ = ramped ? 0.0 : 1.0;
 }
 
 bool Simulation::paints(const StageSpec& stage) const {

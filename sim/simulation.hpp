@@ -53,7 +53,6 @@ class Simulation {
   const World& world() const { return world_; }
   double time() const { return time_; }              // since the start of the run
   double stage_time() const { return stage_time_; }  // since the start of this stage
-  double gravity_factor() const { return gravity_factor_; }
   const std::vector<StageResult>& results() const { return results_; }
   bool paints(const StageSpec& stage) const;
 
@@ -69,7 +68,6 @@ class Simulation {
   World world_;
   double time_ = 0, stage_time_ = 0;
   double gravity_factor_ = 0;  // share of full gravity applied; the gravity stage ramps it to 1
-  bool gravity_applied_ = false;
   int frames_ = 0;
   std::vector<StageResult> results_;
 };
