@@ -54,6 +54,9 @@ struct RunResult {
   bool at_rest = false;
   double runout = 0;
   double max_ux = 0;
+  Frame last;          // the latest slide frame (every 0.5 s)
+  bool has_last = false;
+  std::string failed;  // why the run failed ("" : it did not)
   std::vector<render::VideoFiles> videos;
 };
 
@@ -64,6 +67,8 @@ class GalleryObserver : public sim::Observer {
   void frame(const sim::Simulation& sim, const sim::StageSpec& stage, int frame) override {
     if (recorder_) recorder_->capture(sim.world(), sim.stage_time(), frame, stage.name);
     if (stage.type != sim::StageType::Dynamic) return;
+    r_.last = capture_frame(sim.world(), kFields, frame, sim.stage_time(), stage.name);
+    r_.has_last = true;
     for (const double t : kSlideTimes)
       if (std::abs(sim.stage_time() - t) < 1e-6)
         r_.at[t] = capture_frame(sim.world(), kFields, frame, sim.stage_time(), stage.name);
@@ -138,7 +143,23 @@ class Gallery {
     std::cerr << "running " << s.name << " (" << r->points << " points, h = " << s.cell_size
               << " m)\n";
     GalleryObserver observer(*r, recorder.get());
-    simulation.run(observer);
+    try {
+      simulation.run(observer);
+    } catch (const sim::ScenarioError&) {
+      throw;
+    } catch (const std::exception& e) {
+      // A failed run (e.g. a point thrown out of the grid) still shows its
+      // last frame; the figure's caption says so.
+      r->failed = e.what();
+      std::cerr << "  " << s.name << ": the run failed: " << e.what() << '\n';
+      if (r->has_last) {
+        r->slide_end = r->last;
+        r->slide_time = r->last.time;
+      } else {
+        r->slide_end = r->gravity_end;
+      }
+      if (recorder && recorder->pending() > 0) recorder->paint_pending();
+    }
     r->wall = seconds_since(start);
     std::cerr << "  " << s.name << ": " << fmt(r->wall) << " s wall, slide "
               << fmt(r->slide_time) << " s" << (r->at_rest ? " (at rest)" : "") << ", runout "
@@ -185,6 +206,12 @@ class Gallery {
   }
 
   double run_wall() const { return run_wall_; }
+  std::vector<std::string> failures() const {
+    std::vector<std::string> f;
+    for (const auto& [file, r] : runs_)
+      if (!r->failed.empty()) f.push_back(file + ": " + r->failed);
+    return f;
+  }
   bool quick() const { return quick_; }
 
  private:
@@ -212,11 +239,23 @@ class Gallery {
 const Frame* state_at(const RunResult& r, double t, std::string& note) {
   auto it = r.at.find(t);
   if (it != r.at.end()) return &it->second;
+  if (!r.failed.empty()) {
+    note = " (run FAILED after " + fmt(r.slide_time) + " s: last frame)";
+    return &r.slide_end;
+  }
   note = " (at rest after " + fmt(r.slide_time) + " s: final state)";
   return &r.slide_end;
 }
 
 std::string pts(const RunResult& r) { return std::to_string(r.points) + " points"; }
+
+// "end at 12.8 s (at rest), runout 18.9 m", or what is shown of a failed run.
+std::string ending(const RunResult& r) {
+  if (!r.failed.empty())
+    return "run FAILED after " + fmt(r.slide_time) + " s (a point left the grid): last frame";
+  return "end at " + fmt(r.slide_time) + " s" + (r.at_rest ? " (at rest)" : "") + ", runout " +
+         fmt(r.runout) + " m";
+}
 
 }  // namespace
 
@@ -317,8 +356,7 @@ int gallery_command(const GalleryOptions& o) {
       for (const std::string& f : files) {
         RunResult& r = g.run(f, f == "paper-slope-phi20.json");
         panels.push_back({&r, &r.slide_end});
-        caps.push_back(pts(r) + ", h = " + fmt(r.scenario.cell_size, 3) + " m: end at " +
-                       fmt(r.slide_time) + " s, runout " + fmt(r.runout) + " m");
+        caps.push_back(pts(r) + ", h = " + fmt(r.scenario.cell_size, 3) + " m: " + ending(r));
       }
       g.figure("fig11-resolutions.png",
                "Fig. 11: end of the slide at four resolutions, phi = 20 deg" + q, panels, caps,
@@ -331,9 +369,7 @@ int gallery_command(const GalleryOptions& o) {
         const std::string f = std::string("paper-slope-phi") + phi + ".json";
         RunResult& r = g.run(f, f == "paper-slope-phi20.json");
         panels.push_back({&r, &r.slide_end});
-        caps.push_back(std::string("phi = ") + phi + " deg, " + pts(r) + ": end at " +
-                       fmt(r.slide_time) + " s" + (r.at_rest ? " (at rest)" : "") +
-                       ", runout " + fmt(r.runout) + " m");
+        caps.push_back(std::string("phi = ") + phi + " deg, " + pts(r) + ": " + ending(r));
       }
       g.figure("fig12-friction-angles.png", "Fig. 12: end of the slide, four friction angles" + q,
                panels, caps, Field::DisplacementX);
@@ -343,6 +379,10 @@ int gallery_command(const GalleryOptions& o) {
               << ", " << (out / "anim-paper-slope-phi20-displacement-x.gif").string() << '\n';
     std::cout << "gallery: " << fmt(seconds_since(total)) << " s in all -> " << out.string()
               << std::endl;
+    const std::vector<std::string> failures = g.failures();
+    for (const std::string& f : failures)
+      std::cerr << "error: run failed (its panels show its last frame): " << f << '\n';
+    if (!failures.empty()) return kExitFailed;
   } catch (const sim::ScenarioError& e) {
     std::cerr << "error: " << e.what() << '\n';
     return kExitBadInput;
