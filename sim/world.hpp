@@ -41,6 +41,9 @@ struct World {
 // spans 3 rows), so every other band can be scattered to the grid at once.
 constexpr int kBandRows = 4;
 
+// Largest volume of a point relative to its initial volume (see update_stress).
+constexpr double kMaxExpansion = 2.0;
+
 // Points per chunk of a reduction: sums are taken chunk by chunk in a fixed
 // order, so they do not depend on the number of threads.
 constexpr int kReductionChunk = 2048;
