@@ -40,19 +40,26 @@ bool Simulation::paints(const StageSpec& stage) const {
 }
 
 void Simulation::run(Observer& observer) {
-  for (const StageSpec& stage : scenario_.stages) {
+  while (stage_index_ < scenario_.stages.size()) {
+    const StageSpec& stage = scenario_.stages[stage_index_];
     if (stage.type == StageType::MaterialChange) {
       observer.stage_begins(*this, stage);
       change_materials(stage);
       StageResult r;
       r.name = stage.name;
       r.type = stage.type;
-      results_.push_back(r);
-      observer.stage_ends(*this, stage, results_.back());
+      finish_stage(stage, r, observer);
     } else {
       run_timed_stage(stage, observer);
     }
   }
+}
+
+void Simulation::finish_stage(const StageSpec& stage, const StageResult& r, Observer& observer) {
+  results_.push_back(r);
+  ++stage_index_;
+  progress_ = StageProgress{};
+  observer.stage_ends(*this, stage, results_.back());
 }
 
 void Simulation::change_materials(const StageSpec& stage) {
@@ -105,35 +112,48 @@ void Simulation::close_energy_balance(StageResult& r, double kinetic_start,
   e.relative_error = e.external_work != 0 ? residual / std::fabs(e.external_work) : 0.0;
 }
 
-void Simulation::run_timed_stage(const StageSpec& stage, Observer& observer) {
-  const auto wall_start = std::chrono::steady_clock::now();
-  StageResult r;
-  r.name = stage.name;
-  r.type = stage.type;
+void Simulation::begin_timed_stage(const StageSpec& stage, Observer& observer) {
+  StageProgress& p = progress_;
+  p = StageProgress{};
+  p.started = true;
+  p.result.name = stage.name;
+  p.result.type = stage.type;
   stage_time_ = 0;
   if (scenario_.output.displacement_reference == "stage-start") {
     world_.points.ref_x = world_.points.x;
     world_.points.ref_y = world_.points.y;
   }
   observer.stage_begins(*this, stage);
+  p.max_signal = max_signal_speed(world_);
+  p.kinetic_start = kinetic_energy(world_);
+  p.elastic_start = elastic_energy(world_);
+}
+
+// The time loop of one stage. Every variable it carries between steps lives
+// in progress_, so a state saved by the observer's progress() continues here.
+void Simulation::run_timed_stage(const StageSpec& stage, Observer& observer) {
+  wall_start_ = std::chrono::steady_clock::now();
+  if (progress_.started)
+    observer.stage_begins(*this, stage);  // resumed mid-stage from a saved state
+  else
+    begin_timed_stage(stage, observer);
+  StageProgress& p = progress_;
+  StageResult& r = p.result;
   const bool painted = paints(stage);
   const double interval = scenario_.output.frame_interval;
-  long next_frame = 0;  // frame k falls at stage time k * interval
-  double max_signal = max_signal_speed(world_);
-  const double kinetic_start = kinetic_energy(world_), elastic_start = elastic_energy(world_);
   StepReport report;
   while (true) {
-    if (painted && next_frame * interval <= stage_time_ + kEventSlack * interval) {
+    if (painted && p.next_frame * interval <= stage_time_ + kEventSlack * interval) {
       observer.frame(*this, stage, frames_++);
-      ++next_frame;
+      ++p.next_frame;
     }
     if (stage_time_ >= stage.duration * (1 - kEventSlack) || (r.steps > 0 && at_rest(stage, r))) {
       r.ended_at_rest = stage_time_ < stage.duration * (1 - kEventSlack);
       break;
     }
-    double dt = choose_time_step(max_signal);
+    double dt = choose_time_step(p.max_signal);
     double until = stage.duration - stage_time_;
-    if (painted) until = std::min(until, next_frame * interval - stage_time_);
+    if (painted) until = std::min(until, p.next_frame * interval - stage_time_);
     if (dt >= until * (1 - kEventSlack)) dt = until;
     const double factor = stage_gravity_factor(stage, stage_time_ + 0.5 * dt);
     const Vec2 g{factor * scenario_.gravity[0], factor * scenario_.gravity[1]};
@@ -147,18 +167,17 @@ void Simulation::run_timed_stage(const StageSpec& stage, Observer& observer) {
     r.energy.wall_loss += report.wall_loss;
     r.kinetic_energy = report.kinetic_energy;
     r.moving_kinetic_energy = report.moving_kinetic_energy;
-    max_signal = report.max_signal;
+    p.max_signal = report.max_signal;
     observer.progress(*this, stage, r.steps);
   }
   if (stage.type == StageType::Gravity) gravity_factor_ = 1.0;
-  if (painted && (next_frame - 1) * interval < stage_time_ - kEventSlack * interval)
+  if (painted && (p.next_frame - 1) * interval < stage_time_ - kEventSlack * interval)
     observer.frame(*this, stage, frames_++);  // the stage ended between frame times
   r.simulated_time = stage_time_;
-  close_energy_balance(r, kinetic_start, elastic_start);
+  close_energy_balance(r, p.kinetic_start, p.elastic_start);
   r.metrics = measure_stage(world_);
-  r.wall_time = seconds_since(wall_start);
-  results_.push_back(r);
-  observer.stage_ends(*this, stage, results_.back());
+  r.wall_time += seconds_since(wall_start_);
+  finish_stage(stage, r, observer);
 }
 
 }  // namespace sim

@@ -3,6 +3,8 @@
 // observer (the app: frames, VTK, progress) when something happens.
 #pragma once
 
+#include <chrono>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -38,7 +40,9 @@ class Observer {
   // A frame time of a painted stage; frame counts frames across the run.
   virtual void frame(const Simulation&, const StageSpec&, int /*frame*/) {}
   virtual void stage_ends(const Simulation&, const StageSpec&, const StageResult&) {}
-  // Called every step; the observer decides how often to print.
+  // Called after every step, with the run in a state save_state() can store
+  // and a resumed run continues from exactly. The observer decides how often
+  // to print or save; it may throw to stop the run.
   virtual void progress(const Simulation&, const StageSpec&, long /*steps*/) {}
 };
 
@@ -46,18 +50,31 @@ class Simulation {
  public:
   explicit Simulation(const Scenario& scenario);
 
-  // Runs every stage in order.
+  // Runs every stage not yet run, in order (all of them, unless a saved state
+  // was restored).
   void run(Observer& observer);
+
+  // The whole state between two steps, or between two stages: the points,
+  // the materials as they stand, the time, the results so far and the loop's
+  // own variables. Restored into a Simulation of the same scenario, it
+  // continues bit-identically. restore_state throws StateError (naming
+  // `label`) for a state of another scenario, build or point count.
+  std::string save_state() const;
+  // After a failed restore the Simulation must not be run.
+  void restore_state(const std::string& bytes, const std::string& label);
 
   const Scenario& scenario() const { return scenario_; }
   const World& world() const { return world_; }
   double time() const { return time_; }              // since the start of the run
   double stage_time() const { return stage_time_; }  // since the start of this stage
   const std::vector<StageResult>& results() const { return results_; }
+  std::size_t stage_index() const { return stage_index_; }  // the stage running or next
   bool paints(const StageSpec& stage) const;
 
  private:
   void run_timed_stage(const StageSpec& stage, Observer& observer);
+  void begin_timed_stage(const StageSpec& stage, Observer& observer);
+  void finish_stage(const StageSpec& stage, const StageResult& r, Observer& observer);
   void change_materials(const StageSpec& stage);
   double choose_time_step(double max_signal) const;
   void close_energy_balance(StageResult& r, double kinetic_start, double elastic_start) const;
@@ -70,6 +87,25 @@ class Simulation {
   double gravity_factor_ = 0;  // share of full gravity applied; the gravity stage ramps it to 1
   int frames_ = 0;
   std::vector<StageResult> results_;
+  std::size_t stage_index_ = 0;
+
+  // What the time loop carries from one step to the next within a timed stage.
+  struct StageProgress {
+    bool started = false;
+    StageResult result;      // sums so far
+    long next_frame = 0;     // frame k falls at stage time k * frame_interval
+    double max_signal = 0;   // of the last step, for the next time step
+    double kinetic_start = 0, elastic_start = 0;  // for the energy balance
+  };
+  StageProgress progress_;
+  std::chrono::steady_clock::time_point wall_start_;  // of this stage, or of its resumption
 };
+
+// A key of the inputs that define the first `stages` stages of a scenario
+// (domain, grid, gravity, walls, materials, bodies, time step, those stages,
+// and the output settings they use): two scenarios with the same key reach
+// the same state at the end of those stages, so one can start from the
+// other's saved state.
+std::uint64_t stage_prefix_key(const Scenario& scenario, std::size_t stages);
 
 }  // namespace sim

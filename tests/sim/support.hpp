@@ -1,9 +1,27 @@
 // Small scenes built in code for the solver's unit tests.
 #pragma once
 
+#include <cstdint>
+
+#include "sim/particles.hpp"
 #include "sim/scenario.hpp"
 
 namespace simtest {
+
+inline std::uint64_t fnv1a(std::uint64_t h, const void* data, std::size_t bytes) {
+  const auto* b = static_cast<const unsigned char*>(data);
+  for (std::size_t i = 0; i < bytes; ++i) h = (h ^ b[i]) * 1099511628211ull;
+  return h;
+}
+
+// A 64-bit hash of every value a step changes: equal hashes, equal states.
+inline std::uint64_t state_hash(const sim::Particles& p) {
+  std::uint64_t h = 1469598103934665603ull;
+  for (const auto* v : {&p.x, &p.y, &p.vx, &p.vy, &p.density, &p.sxx, &p.syy, &p.sxy, &p.szz,
+                        &p.ref_x, &p.ref_y})
+    h = fnv1a(h, v->data(), v->size() * sizeof(double));
+  return fnv1a(h, p.yielded.data(), p.yielded.size());
+}
 
 // One linear-elastic rectangle body on a padded grid, walls free unless set.
 inline sim::Scenario block_scenario(sim::Vec2 lo, sim::Vec2 hi, double h, int ppc,

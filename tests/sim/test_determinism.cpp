@@ -8,21 +8,11 @@
 #include <cstring>
 
 #include "sim/simulation.hpp"
+#include "support.hpp"
 
 namespace {
 
-std::uint64_t fnv1a(std::uint64_t h, const void* data, std::size_t bytes) {
-  const auto* b = static_cast<const unsigned char*>(data);
-  for (std::size_t i = 0; i < bytes; ++i) h = (h ^ b[i]) * 1099511628211ull;
-  return h;
-}
-
-std::uint64_t state_hash(const sim::Particles& p) {
-  std::uint64_t h = 1469598103934665603ull;
-  for (const auto* v : {&p.x, &p.y, &p.vx, &p.vy, &p.density, &p.sxx, &p.syy, &p.sxy, &p.szz})
-    h = fnv1a(h, v->data(), v->size() * sizeof(double));
-  return fnv1a(h, p.yielded.data(), p.yielded.size());
-}
+using simtest::state_hash;
 
 std::uint64_t run_with_threads(const char* file, int threads) {
   sim::Scenario s = sim::load_scenario(file);
