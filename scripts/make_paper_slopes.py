@@ -20,6 +20,14 @@ TOP = 20.0
 # Cell size per point count (method notes section 3).
 RESOLUTIONS = {1648: 1.127, 8370: 0.5, 28724: 0.270, 67016: 0.177}
 
+# Friction angle of the soil before the trigger, the same in every scene. With
+# 40 kPa of cohesion the slope never yields in the gravity stage at any of the
+# four angles (f < 0 everywhere: tests/sim/test_paper_slope.cpp), and an
+# elastic state does not depend on the friction angle. So the trigger removes
+# the cohesion and sets the scene's angle, and the scenes of one resolution
+# share one gravity stage, which `landslide gallery` computes once.
+PHI_BEFORE_TRIGGER = 25
+
 
 def scenario(phi, points, name):
     h = RESOLUTIONS[points]
@@ -28,14 +36,16 @@ def scenario(phi, points, name):
         "description": (
             f"The paper's 40 degree slope with a house (Andersen & Andersen), friction {phi} deg "
             f"after the trigger, about {points} points (h = {h} m). Gravity is ramped in with "
-            "cohesion 40 kPa; the trigger removes the cohesion; the slide runs until at rest."),
+            f"cohesion 40 kPa (the soil stays elastic, so its friction angle, "
+            f"{PHI_BEFORE_TRIGGER} deg until the trigger, does not matter); the trigger "
+            "removes the cohesion and sets the friction angle; the slide runs until at rest."),
         "domain": {"min": [0, 0], "max": [RIGHT, TOP]},
         "grid": {"cell_size": h, "padding_cells": 2, "points_per_cell": 2},
         "gravity": [0, -9.81],
         "boundaries": {"left": "roller", "right": "roller", "bottom": "fixed", "top": "free"},
         "materials": {
             "soil": {"model": "mohr-coulomb", "density": 2000, "youngs_modulus": 20e6,
-                     "poisson_ratio": 0.25, "cohesion": 40e3, "friction_angle": phi,
+                     "poisson_ratio": 0.25, "cohesion": 40e3, "friction_angle": PHI_BEFORE_TRIGGER,
                      "dilation_angle": min(10, phi)},
             "house": {"model": "linear-elastic", "density": 500, "youngs_modulus": 20e6,
                       "poisson_ratio": 0.25},
@@ -51,7 +61,7 @@ def scenario(phi, points, name):
             {"name": "gravity", "type": "gravity", "duration": 5.0, "ramp_fraction": 0.5,
              "damping": 0.01},
             {"name": "trigger", "type": "material-change", "material": "soil",
-             "set": {"cohesion": 0}},
+             "set": {"cohesion": 0, "friction_angle": phi}},
             {"name": "slide", "type": "dynamic", "duration": 40.0,
              "stop_at_rest": {"kinetic_ratio": 1e-4, "min_time": 2.0}},
         ],
