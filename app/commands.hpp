@@ -48,8 +48,9 @@ int panel_command(const PanelOptions& options);
 void write_panel(const std::vector<std::string>& images, const std::vector<std::string>& captions,
                  int cols, const std::string& title, const std::string& out);
 
-// `landslide gallery`: the paper's figures 5, 6, 9, 10, 11, 12 (PNG) and an
-// animation of the phi = 20 slide, regenerated from the committed scenarios.
+// `landslide gallery`: the paper's figures 5, 6, 9, 10, 11, 12 (PNG), an
+// animation of the phi = 20 slide and one of the four friction angles side by
+// side, regenerated from the committed scenarios.
 struct GalleryOptions {
   std::string out;        // directory
   std::string scenarios;  // "" : ./scenarios

@@ -1,6 +1,7 @@
-// `landslide gallery`: regenerates the paper's figures (5, 6, 9, 10, 11, 12)
-// and an animation of the phi = 20 slide from the committed scenarios. Each
-// scenario is run once; an observer keeps the states the figures need.
+// `landslide gallery`: regenerates the paper's figures (5, 6, 9, 10, 11, 12),
+// an animation of the phi = 20 slide and one of the four friction angles side
+// by side from the committed scenarios. Each scenario is run once; an
+// observer keeps the states the figures need.
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -14,6 +15,7 @@
 
 #include "app/commands.hpp"
 #include "app/frames.hpp"
+#include "app/gallery_parts.hpp"
 #include "render/error.hpp"
 #include "render/font.hpp"
 #include "render/panel.hpp"
@@ -27,6 +29,10 @@ namespace fs = std::filesystem;
 
 namespace {
 
+using gallery::copy_atomically;
+using gallery::ending;
+using gallery::fmt;
+using gallery::RunResult;
 using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point t) {
   return std::chrono::duration<double>(Clock::now() - t).count();
@@ -43,23 +49,6 @@ std::size_t field_index(Field f) {
 // Slide times (s into the slide) the figures show.
 const std::vector<double> kSlideTimes = {3, 4, 8, 12, 16};
 
-struct RunResult {
-  sim::Scenario scenario;
-  std::size_t points = 0;
-  double wall = 0;
-  Frame gravity_end;
-  std::map<double, Frame> at;  // slide time -> state
-  Frame slide_end;
-  double slide_time = 0;
-  bool at_rest = false;
-  double runout = 0;
-  double max_ux = 0;
-  Frame last;          // the latest slide frame (every 0.5 s)
-  bool has_last = false;
-  std::string failed;  // why the run failed ("" : it did not)
-  std::vector<render::VideoFiles> videos;
-};
-
 class GalleryObserver : public sim::Observer {
  public:
   GalleryObserver(RunResult& r, FrameRecorder* recorder) : r_(r), recorder_(recorder) {}
@@ -69,6 +58,8 @@ class GalleryObserver : public sim::Observer {
     if (stage.type != sim::StageType::Dynamic) return;
     r_.last = capture_frame(sim.world(), kFields, frame, sim.stage_time(), stage.name);
     r_.has_last = true;
+    r_.slide_frames.push_back(
+        capture_frame(sim.world(), {Field::DisplacementX}, frame, sim.stage_time(), stage.name));
     for (const double t : kSlideTimes)
       if (std::abs(sim.stage_time() - t) < 1e-6)
         r_.at[t] = capture_frame(sim.world(), kFields, frame, sim.stage_time(), stage.name);
@@ -100,12 +91,6 @@ class GalleryObserver : public sim::Observer {
   FrameRecorder* recorder_;
   Clock::time_point last_ = Clock::now();
 };
-
-std::string fmt(double v, int digits = 1) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*f", digits, v);
-  return buf;
-}
 
 class Gallery {
  public:
@@ -221,13 +206,6 @@ class Gallery {
     return *painter_;
   }
 
-  static void copy_atomically(const fs::path& from, const fs::path& to) {
-    fs::path tmp = to;
-    tmp += ".tmp";
-    fs::copy_file(from, tmp, fs::copy_options::overwrite_existing);
-    fs::rename(tmp, to);
-  }
-
   fs::path scenarios_, out_;
   bool quick_;
   std::map<std::string, std::unique_ptr<RunResult>> runs_;
@@ -243,19 +221,12 @@ const Frame* state_at(const RunResult& r, double t, std::string& note) {
     note = " (run FAILED after " + fmt(r.slide_time) + " s: last frame)";
     return &r.slide_end;
   }
-  note = " (at rest after " + fmt(r.slide_time) + " s: final state)";
+  note = std::string(r.at_rest ? " (at rest" : " (ended") + " after " + fmt(r.slide_time) +
+         " s: final state)";
   return &r.slide_end;
 }
 
 std::string pts(const RunResult& r) { return std::to_string(r.points) + " points"; }
-
-// "end at 12.8 s (at rest), runout 18.9 m", or what is shown of a failed run.
-std::string ending(const RunResult& r) {
-  if (!r.failed.empty())
-    return "run FAILED after " + fmt(r.slide_time) + " s (a point left the grid): last frame";
-  return "end at " + fmt(r.slide_time) + " s" + (r.at_rest ? " (at rest)" : "") + ", runout " +
-         fmt(r.runout) + " m";
-}
 
 }  // namespace
 
@@ -362,21 +333,38 @@ int gallery_command(const GalleryOptions& o) {
                "Fig. 11: end of the slide at four resolutions, phi = 20 deg" + q, panels, caps,
                Field::DisplacementX);
     });
+    const std::vector<std::string> angles = {"25", "20", "15", "10"};
+    auto friction_run = [&](const std::string& phi) -> RunResult& {
+      const std::string f = "paper-slope-phi" + phi + ".json";
+      return g.run(f, f == "paper-slope-phi20.json");
+    };
     timed("fig12-friction-angles.png", [&] {
       std::vector<std::pair<const RunResult*, const Frame*>> panels;
       std::vector<std::string> caps;
-      for (const char* phi : {"25", "20", "15", "10"}) {
-        const std::string f = std::string("paper-slope-phi") + phi + ".json";
-        RunResult& r = g.run(f, f == "paper-slope-phi20.json");
+      for (const std::string& phi : angles) {
+        RunResult& r = friction_run(phi);
         panels.push_back({&r, &r.slide_end});
-        caps.push_back(std::string("phi = ") + phi + " deg, " + pts(r) + ": " + ending(r));
+        caps.push_back("phi = " + phi + " deg, " + pts(r) + ": " + ending(r));
       }
       g.figure("fig12-friction-angles.png", "Fig. 12: end of the slide, four friction angles" + q,
                panels, caps, Field::DisplacementX);
     });
+    const std::string side_by_side = "anim-friction-angles-displacement-x";
+    timed(side_by_side + ".mp4/.gif", [&] {
+      std::vector<const RunResult*> runs;
+      std::vector<std::string> labels;
+      for (const std::string& phi : angles) {
+        runs.push_back(&friction_run(phi));
+        labels.push_back("phi = " + phi + " deg, " + pts(*runs.back()));
+      }
+      gallery::write_side_by_side(runs, labels,
+                                  "The slide at four friction angles: horizontal displacement" + q,
+                                  out / ".work" / side_by_side, out, side_by_side);
+    });
     fs::remove_all(out / ".work");
-    std::cout << "animation: " << (out / "anim-paper-slope-phi20-displacement-x.mp4").string()
-              << ", " << (out / "anim-paper-slope-phi20-displacement-x.gif").string() << '\n';
+    for (const std::string& base : {std::string("anim-paper-slope-phi20-displacement-x"), side_by_side})
+      std::cout << "animation: " << (out / (base + ".mp4")).string() << ", "
+                << (out / (base + ".gif")).string() << '\n';
     std::cout << "gallery: " << fmt(seconds_since(total)) << " s in all -> " << out.string()
               << std::endl;
     const std::vector<std::string> failures = g.failures();
