@@ -1,5 +1,6 @@
 // The subcommands of `landslide`. Each returns the process exit status:
-// 0 done, 2 bad input (nothing written), 1 the run failed.
+// 0 done, 2 bad input (nothing written), 1 the run failed, 130 stopped by
+// Ctrl-C after writing a checkpoint.
 #pragma once
 
 #include <optional>
@@ -12,14 +13,28 @@ namespace app {
 constexpr int kExitOk = 0;
 constexpr int kExitFailed = 1;
 constexpr int kExitBadInput = 2;
+constexpr int kExitInterrupted = 130;  // 128 + SIGINT, as shells report it
 
 struct RunOptions {
   std::string scenario;
   std::string out_dir;
   int threads = 0;  // 0: OpenMP's default
+  double checkpoint_every = 0;  // s of simulated time between checkpoints; 0: none
+  // A folder of saved gravity-stage states shared by runs: a scenario whose
+  // first stages match a saved one (sim::stage_prefix_key) starts from it.
+  std::string state_cache;  // "": no reuse
 };
 
 int run_command(const RunOptions& options);
+
+// `landslide resume DIR`: continues the run whose checkpoint is
+// DIR/checkpoint.lsck, writing into DIR as the run would have.
+struct ResumeOptions {
+  std::string dir;
+  int threads = 0;
+  double checkpoint_every = 0;
+};
+int resume_command(const ResumeOptions& options);
 int check_command(const std::string& scenario);
 
 // `landslide render`: re-paints saved VTK states without simulating.

@@ -273,6 +273,13 @@ void FrameRecorder::start() {
   started_ = true;
 }
 
+void FrameRecorder::resume(std::vector<Frame> frames, int written) {
+  for (const Field f : fields_) fs::create_directories(frames_dir(f));
+  started_ = true;
+  frames_ = std::move(frames);
+  written_ = written;
+}
+
 void FrameRecorder::capture(const sim::World& world, double stage_time, int number,
                             const std::string& stage) {
   frames_.push_back(capture_frame(world, fields_, number, stage_time, stage));

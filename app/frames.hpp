@@ -154,6 +154,13 @@ class FrameRecorder {
   std::filesystem::path frames_dir(Field f) const;
   const std::vector<Field>& fields() const { return fields_; }
 
+  // For checkpoints: the captured frames not yet painted and the PNGs
+  // written so far; resume() takes them back in a resumed run (and keeps the
+  // PNGs of the stopped run, which start() would remove).
+  const std::vector<Frame>& pending_frames() const { return frames_; }
+  int written() const { return written_; }
+  void resume(std::vector<Frame> frames, int written);
+
  private:
   const sim::Scenario& scenario_;
   std::filesystem::path out_;

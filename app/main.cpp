@@ -1,5 +1,5 @@
-// landslide: simulate a scenario (and paint it), check one, re-paint saved
-// states, compose a panel of frames.
+// landslide: simulate a scenario (and paint it), resume a stopped run, check
+// a scenario, re-paint saved states, compose a panel of frames.
 #include "landslide_version.hpp"
 #include <CLI/CLI.hpp>
 
@@ -16,6 +16,23 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--out", run.out_dir, "Output directory")->required();
   run_cmd->add_option("--threads", run.threads, "OpenMP threads (default: all cores)")
       ->check(CLI::Range(1, 1024));
+  run_cmd->add_option("--checkpoint-every", run.checkpoint_every,
+                      "Write OUT/checkpoint.lsck every this many seconds of simulated time "
+                      "(Ctrl-C always writes one)")
+      ->check(CLI::PositiveNumber);
+  run_cmd->add_option("--state-cache", run.state_cache,
+                      "Folder of saved gravity-stage states: start from a matching one, save "
+                      "this run's if there is none");
+
+  app::ResumeOptions resume;
+  CLI::App* resume_cmd = cli.add_subcommand(
+      "resume", "Continue a stopped run from DIR/checkpoint.lsck, as if it had never stopped");
+  resume_cmd->add_option("dir", resume.dir, "The stopped run's output directory")->required();
+  resume_cmd->add_option("--threads", resume.threads, "OpenMP threads (default: all cores)")
+      ->check(CLI::Range(1, 1024));
+  resume_cmd->add_option("--checkpoint-every", resume.checkpoint_every,
+                         "Go on writing checkpoints every this many simulated seconds")
+      ->check(CLI::PositiveNumber);
 
   std::string check_path;
   CLI::App* check_cmd = cli.add_subcommand("check", "Validate a scenario; write nothing");
@@ -68,6 +85,7 @@ int main(int argc, char** argv) {
     return code == 0 ? 0 : app::kExitBadInput;
   }
   if (*run_cmd) return app::run_command(run);
+  if (*resume_cmd) return app::resume_command(resume);
   if (*check_cmd) return app::check_command(check_path);
   if (*render_cmd) {
     if (range.size() == 2) render.range = std::make_pair(range[0], range[1]);

@@ -243,7 +243,7 @@ Scenario parse_scenario(const std::string& text, const std::string& label) {
   }
 }
 
-Scenario load_scenario(const std::string& path) {
+std::string read_scenario_text(const std::string& path) {
   std::error_code ec;  // a directory opens as a stream and then reads as empty text
   if (std::filesystem::is_directory(path, ec)) fail_at(path, "cannot read file: it is a directory");
   // A scenario is kilobytes; a path to something huge is a mistake, and
@@ -258,7 +258,11 @@ Scenario load_scenario(const std::string& path) {
   std::ostringstream text;
   text << in.rdbuf();
   if (in.bad()) fail_at(path, "cannot read file: " + std::string(std::strerror(errno)));
-  return parse_scenario(text.str(), path);
+  return text.str();
+}
+
+Scenario load_scenario(const std::string& path) {
+  return parse_scenario(read_scenario_text(path), path);
 }
 
 }  // namespace sim

@@ -112,7 +112,10 @@ class ScenarioError : public std::runtime_error {
 
 // Reads and validates a scenario file; throws ScenarioError on any problem.
 Scenario load_scenario(const std::string& path);
-// Same, from text already read (the label names the source in messages).
+// The text of a scenario file (at most 64 MiB); throws ScenarioError.
+std::string read_scenario_text(const std::string& path);
+// Same as load_scenario, from text already read (the label names the source
+// in messages).
 Scenario parse_scenario(const std::string& text, const std::string& label);
 
 }  // namespace sim

@@ -1,0 +1,39 @@
+// A run's checkpoint, DIR/checkpoint.lsck: everything `landslide resume DIR`
+// needs to finish the run as if it had never stopped. One file, written
+// under a temporary name and renamed, so a kill at any moment leaves either
+// the previous checkpoint or the new one.
+//
+//   the scenario's text and file name   (the run does not depend on the file
+//                                        still being there, or unchanged)
+//   the run's own bookkeeping (JSON)    VTK files listed so far, PNGs written
+//   the simulation state                sim::Simulation::save_state()
+//   the frames captured but not painted (a stage is painted when it ends,
+//                                        with one colour range over its frames)
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "app/frames.hpp"
+
+namespace app {
+
+struct Checkpoint {
+  std::string scenario_text;
+  std::string scenario_file;  // as given to `landslide run`, for messages
+  nlohmann::json run;         // the observer's bookkeeping
+  std::string state;          // sim::Simulation::save_state()
+  std::vector<Frame> frames;  // captured, not yet painted
+};
+
+std::filesystem::path checkpoint_path(const std::filesystem::path& out_dir);
+
+void write_checkpoint(const std::filesystem::path& file, const Checkpoint& c);
+// Throws sim::StateError naming the file if it is missing, truncated or not
+// a checkpoint of this build.
+Checkpoint read_checkpoint(const std::filesystem::path& file);
+
+}  // namespace app

@@ -1,0 +1,213 @@
+#include "app/run_observer.hpp"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <csignal>
+#include <cstdio>
+#include <iostream>
+#include <sstream>
+
+#include "app/checkpoint.hpp"
+#include "app/state_cache.hpp"
+#include "app/summary.hpp"
+#include "sim/atomic_file.hpp"
+#include "sim/vtk.hpp"
+
+namespace app {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+volatile std::sig_atomic_t interrupt_requested = 0;
+
+extern "C" void on_interrupt(int) {
+  interrupt_requested = 1;
+  static const char msg[] =
+      "\nCtrl-C: stopping after this step and writing a checkpoint (Ctrl-C again quits at "
+      "once)\n";
+  [[maybe_unused]] const ssize_t n = ::write(2, msg, sizeof msg - 1);
+}
+
+double seconds_since(std::chrono::steady_clock::time_point t) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
+bool stage_is_painted(const sim::Scenario& s, const sim::StageSpec& stage) {
+  const auto& names = s.output.frame_stages;
+  return s.output.frame_interval > 0 &&
+         std::find(names.begin(), names.end(), stage.name) != names.end();
+}
+
+}  // namespace
+
+void catch_interrupt() {
+  interrupt_requested = 0;
+  struct sigaction sa {};
+  sa.sa_handler = on_interrupt;
+  sa.sa_flags = SA_RESETHAND;
+  sigemptyset(&sa.sa_mask);
+  sigaction(SIGINT, &sa, nullptr);
+}
+
+void release_interrupt() { std::signal(SIGINT, SIG_DFL); }
+
+RunObserver::RunObserver(const sim::Scenario& scenario, fs::path out, int threads,
+                         std::unique_ptr<FrameRecorder> recorder, RunSource source)
+    : out_(std::move(out)),
+      threads_(threads),
+      source_(std::move(source)),
+      next_checkpoint_(source_.checkpoint_every),
+      recorder_(std::move(recorder)) {
+  for (const sim::StageSpec& s : scenario.stages)
+    if (s.type != sim::StageType::MaterialChange && stage_is_painted(scenario, s))
+      last_painted_stage_ = s.name;
+  if (recorder_) recorder_->start();
+}
+
+void RunObserver::resume(const Checkpoint& c, double time) {
+  const nlohmann::json& run = c.run;
+  for (const auto& f : run.at("vtk_files")) vtk_files_.emplace_back(f.at(0), f.at(1));
+  states_ = run.at("states");
+  wall_before_ = run.at("wall_time_s");
+  if (recorder_) recorder_->resume(c.frames, run.at("pngs_written"));
+  const double every = source_.checkpoint_every;
+  if (every > 0) next_checkpoint_ = (std::floor(time / every) + 1) * every;
+}
+
+void RunObserver::stages_restored(const sim::Simulation& sim) {
+  const auto& stages = sim.scenario().stages;
+  for (std::size_t k = 0; k < sim.stage_index(); ++k)
+    if (stages[k].type != sim::StageType::MaterialChange && sim.scenario().output.vtk == "stage-end")
+      write_state(sim, stages[k], stages[k].name + "-end.vtu", -1);
+  write_summary(sim, "running");
+}
+
+void RunObserver::stage_begins(const sim::Simulation& sim, const sim::StageSpec& stage) {
+  progress_.update(stage.name, sim.stage_time(), stage.duration, 0);
+}
+
+void RunObserver::frame(const sim::Simulation& sim, const sim::StageSpec& stage, int frame) {
+  if (recorder_) recorder_->capture(sim.world(), sim.stage_time(), frame, stage.name);
+  if (sim.scenario().output.vtk == "frames") {
+    char name[32];
+    std::snprintf(name, sizeof name, "frame-%06d.vtu", frame);
+    write_state(sim, stage, name, frame);
+  }
+}
+
+void RunObserver::progress(const sim::Simulation& sim, const sim::StageSpec& stage, long steps) {
+  progress_.update(stage.name, sim.stage_time(), stage.duration, steps);
+  const double every = source_.checkpoint_every;
+  const bool due = every > 0 && sim.time() >= next_checkpoint_;
+  if (!due && !interrupt_requested) return;
+  write_checkpoint(sim);
+  if (every > 0) next_checkpoint_ = (std::floor(sim.time() / every) + 1) * every;
+  if (interrupt_requested) throw Interrupted{sim.time()};
+}
+
+void RunObserver::stage_ends(const sim::Simulation& sim, const sim::StageSpec& stage,
+                             const sim::StageResult& r) {
+  if (stage.type != sim::StageType::MaterialChange && sim.scenario().output.vtk == "stage-end")
+    write_state(sim, stage, stage.name + "-end.vtu", -1);
+  std::ostringstream msg;
+  msg << stage.name << ": done";
+  if (stage.type != sim::StageType::MaterialChange) {
+    msg << " at t = " << r.simulated_time << " s" << (r.ended_at_rest ? " (at rest)" : "")
+        << ", " << r.steps << " steps, " << r.wall_time << " s wall, kinetic energy "
+        << r.kinetic_energy << " J/m";
+  }
+  progress_.finish(msg.str());
+  if (!source_.state_cache.empty() && source_.reused_stages == 0 &&
+      sim.stage_index() == sim::reusable_stages(sim.scenario()))
+    save_cached_state(source_.state_cache, sim);
+  if (recorder_ && recorder_->pending() > 0) paint(stage.name);
+  if (recorder_ && stage.name == last_painted_stage_) encode();
+  write_summary(sim, "running");
+}
+
+void RunObserver::paint_after_failure(const std::string& stage) {
+  if (!recorder_) return;
+  try {
+    if (recorder_->pending() > 0) paint(stage);
+    encode();
+  } catch (const std::exception& e) {
+    std::cerr << "error: painting the frames before the failure: " << e.what() << '\n';
+  }
+}
+
+void RunObserver::report_outputs() const {
+  if (!recorder_) return;
+  for (const Field f : recorder_->fields())
+    std::cerr << "frames: " << recorder_->frames_dir(f).string() << "/\n";
+  for (const render::VideoFiles& v : videos_)
+    std::cerr << "video: " << v.mp4 << (v.gif.empty() ? "" : ", " + v.gif) << '\n';
+}
+
+double RunObserver::wall_time() const { return wall_before_ + seconds_since(run_start_); }
+
+void RunObserver::write_summary(const sim::Simulation& sim, const std::string& status) {
+  const nlohmann::json summary = make_summary(sim, threads_, wall_time(), status);
+  sim::write_file_atomically((out_ / "summary.json").string(),
+                             [&](std::ostream& o) { o << summary.dump(2) << '\n'; });
+}
+
+void RunObserver::write_checkpoint(const sim::Simulation& sim) {
+  Checkpoint c;
+  c.scenario_text = source_.scenario_text;
+  c.scenario_file = source_.scenario_file;
+  nlohmann::json files = nlohmann::json::array();
+  for (const auto& [t, name] : vtk_files_) files.push_back({t, name});
+  c.run = {{"vtk_files", files},
+           {"states", states_},
+           {"wall_time_s", wall_time()},
+           {"pngs_written", recorder_ ? recorder_->written() : 0}};
+  c.state = sim.save_state();
+  if (recorder_) c.frames = recorder_->pending_frames();
+  app::write_checkpoint(checkpoint_path(out_), c);
+  write_summary(sim, "running (checkpoint at t = " + std::to_string(sim.time()) + " s)");
+}
+
+void RunObserver::remove_checkpoint() const {
+  std::error_code ec;
+  fs::remove(checkpoint_path(out_), ec);
+}
+
+void RunObserver::paint(const std::string& stage) {
+  const auto start = std::chrono::steady_clock::now();
+  const std::size_t frames = recorder_->pending();
+  const int files = recorder_->paint_pending();
+  std::cerr << stage << ": painted " << frames << " frames, " << files << " PNG files in "
+            << seconds_since(start) << " s\n";
+}
+
+void RunObserver::encode() {
+  const auto start = std::chrono::steady_clock::now();
+  videos_ = recorder_->encode_videos();
+  if (!videos_.empty())
+    std::cerr << "encoded " << videos_.size() << " videos in " << seconds_since(start) << " s\n";
+}
+
+// The .vtu file, the .pvd collection, and vtk/states.json: which stage each
+// state belongs to and its time within the stage, so `landslide render`
+// can label and colour it as the run did.
+void RunObserver::write_state(const sim::Simulation& sim, const sim::StageSpec& stage,
+                              const std::string& name, int frame) {
+  fs::create_directories(out_ / "vtk");
+  sim::write_vtu((out_ / "vtk" / name).string(), sim.world(), sim.time());
+  vtk_files_.emplace_back(sim.time(), name);
+  sim::write_pvd((out_ / "vtk" / "points.pvd").string(), vtk_files_);
+  nlohmann::json entry = {{"file", name},
+                          {"time_s", sim.time()},
+                          {"stage", stage.name},
+                          {"stage_time_s", sim.stage_time()}};
+  entry["frame"] = frame >= 0 ? nlohmann::json(frame) : nlohmann::json(nullptr);
+  states_.push_back(entry);
+  const nlohmann::json doc = {{"states", states_}};
+  sim::write_file_atomically((out_ / "vtk" / "states.json").string(),
+                             [&](std::ostream& o) { o << doc.dump(1) << '\n'; });
+}
+
+}  // namespace app

@@ -1,0 +1,175 @@
+// Checkpoints lose nothing: a run killed (SIGKILL) or stopped by Ctrl-C
+// (SIGINT) and continued with `landslide resume` writes byte for byte the
+// frames, states and videos of a run that never stopped. The real binary
+// runs in a child process, so the kill is a real one.
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
+#include <thread>
+
+#include <nlohmann/json.hpp>
+
+#include "app/commands.hpp"
+#include "render/video.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// A soil block settling and slumping for 1.5 s of simulated time: long
+// enough for the test to see a checkpoint before the run ends.
+const char* const kScene = R"json({
+  "name": "checkpoint-block",
+  "description": "App test: a block settling, then slumping after losing its cohesion.",
+  "domain": {"min": [0, 0], "max": [4, 3]},
+  "grid": {"cell_size": 0.25, "padding_cells": 2, "points_per_cell": 2},
+  "gravity": [0, -9.81],
+  "boundaries": {"left": "roller", "right": "roller", "bottom": "fixed", "top": "free"},
+  "materials": {
+    "block": {"model": "mohr-coulomb", "density": 2000, "youngs_modulus": 2e7,
+              "poisson_ratio": 0.25, "cohesion": 5000, "friction_angle": 30,
+              "dilation_angle": 0}
+  },
+  "bodies": [{"name": "block", "material": "block", "rectangle": {"min": [1, 0], "max": [3, 1.5]}}],
+  "time_step": {"courant": 0.5},
+  "stages": [
+    {"name": "settle", "type": "gravity", "duration": 0.5, "ramp_fraction": 0.5, "damping": 0.01},
+    {"name": "soften", "type": "material-change", "material": "block", "set": {"cohesion": 0}},
+    {"name": "slump", "type": "dynamic", "duration": 1.0}
+  ],
+  "output": {"frame_interval": 0.1, "frame_stages": ["slump"],
+             "fields": ["displacement-x"], "colour_map": "viridis", "vtk": "stage-end",
+             "image_size": [160, 90]}
+})json";
+
+std::string read_bytes(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// Starts `landslide run` in a child, sends it `signal` once it has written
+// its second checkpoint, and returns the child's wait status.
+int run_and_stop(const fs::path& scene, const fs::path& out, int signal) {
+  const pid_t child = ::fork();
+  if (child == 0) {
+    ::execl(LANDSLIDE_BINARY, LANDSLIDE_BINARY, "run", scene.c_str(), "--out", out.c_str(),
+            "--threads", "1", "--checkpoint-every", "0.3", "--state-cache",
+            (out.parent_path() / "cache").c_str(), static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  int status = 0;
+  // Waits for the second checkpoint (t >= 0.6 s, in the slump, with frames
+  // captured and not yet painted), or for the child to end on its own.
+  const fs::path checkpoint = out / "checkpoint.lsck";
+  std::string first;
+  while (::waitpid(child, &status, WNOHANG) == 0) {
+    if (fs::exists(checkpoint)) {
+      const std::string now = read_bytes(checkpoint);
+      if (first.empty()) {
+        first = now;
+      } else if (now != first) {
+        ::kill(child, signal);
+        ::waitpid(child, &status, 0);
+        return status;
+      }
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  }
+  return status;
+}
+
+// Every output file of `a` is in `b` with the same bytes (summary.json aside:
+// it holds wall times).
+void expect_same_outputs(const fs::path& a, const fs::path& b) {
+  int files = 0;
+  for (const auto& e : fs::recursive_directory_iterator(a)) {
+    if (!e.is_regular_file() || e.path().filename() == "summary.json") continue;
+    const fs::path rel = fs::relative(e.path(), a);
+    ++files;
+    ASSERT_TRUE(fs::exists(b / rel)) << rel;
+    EXPECT_TRUE(read_bytes(e.path()) == read_bytes(b / rel)) << rel << " differs";
+  }
+  EXPECT_GE(files, 12);  // 11 frames, 2 states, .pvd, states.json, mp4, gif
+  EXPECT_FALSE(fs::exists(b / "checkpoint.lsck")) << "a finished run keeps no checkpoint";
+}
+
+class Checkpoints : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    if (!render::ffmpeg_available(nullptr)) GTEST_SKIP() << "ffmpeg is not available";
+    root_ = fs::temp_directory_path() / ("landslide-checkpoint-" + std::to_string(::getpid()));
+    fs::remove_all(root_);
+    fs::create_directories(root_);
+    scene_ = root_ / "block.json";
+    std::ofstream(scene_) << kScene;
+    app::RunOptions o;
+    o.scenario = scene_.string();
+    o.out_dir = (root_ / "whole").string();
+    o.threads = 1;
+    ASSERT_EQ(app::run_command(o), app::kExitOk);
+  }
+  void TearDown() override { fs::remove_all(root_); }
+
+  int resume(const fs::path& dir) {
+    app::ResumeOptions r;
+    r.dir = dir.string();
+    r.threads = 1;
+    return app::resume_command(r);
+  }
+
+  fs::path root_, scene_;
+};
+
+TEST_F(Checkpoints, ResumeAfterKillIsByteIdentical) {
+  const fs::path cut = root_ / "killed";
+  const int status = run_and_stop(scene_, cut, SIGKILL);
+  ASSERT_TRUE(WIFSIGNALED(status)) << "the run ended before its second checkpoint";
+  ASSERT_TRUE(fs::exists(cut / "checkpoint.lsck"));
+  EXPECT_EQ(resume(cut), app::kExitOk);
+  expect_same_outputs(root_ / "whole", cut);
+}
+
+TEST_F(Checkpoints, CtrlCWritesACheckpointAndExits130) {
+  const fs::path cut = root_ / "interrupted";
+  const int status = run_and_stop(scene_, cut, SIGINT);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), app::kExitInterrupted);
+  const auto summary = nlohmann::json::parse(read_bytes(cut / "summary.json"));
+  EXPECT_EQ(summary.at("status").get<std::string>().rfind("interrupted", 0), 0u)
+      << summary.at("status");
+  EXPECT_EQ(resume(cut), app::kExitOk);
+  expect_same_outputs(root_ / "whole", cut);
+  // The run saved its gravity stage for the next scene that shares it.
+  EXPECT_EQ(std::distance(fs::directory_iterator(root_ / "cache"), fs::directory_iterator()), 1);
+}
+
+TEST_F(Checkpoints, AReusedGravityStageGivesTheSameOutputs) {
+  app::RunOptions o;
+  o.scenario = scene_.string();
+  o.threads = 1;
+  o.state_cache = (root_ / "cache").string();
+  o.out_dir = (root_ / "first").string();
+  ASSERT_EQ(app::run_command(o), app::kExitOk);  // computes and saves the gravity stage
+  o.out_dir = (root_ / "second").string();
+  ASSERT_EQ(app::run_command(o), app::kExitOk);  // starts from it
+  const auto summary = nlohmann::json::parse(read_bytes(root_ / "second" / "summary.json"));
+  EXPECT_EQ(summary.at("stages").size(), 3u);
+  expect_same_outputs(root_ / "whole", root_ / "first");
+  expect_same_outputs(root_ / "whole", root_ / "second");
+}
+
+TEST_F(Checkpoints, ResumeRefusesAMissingOrDamagedCheckpoint) {
+  EXPECT_EQ(resume(root_ / "whole"), app::kExitBadInput);  // finished: no checkpoint
+  fs::create_directories(root_ / "bad");
+  std::ofstream(root_ / "bad" / "checkpoint.lsck") << "not a checkpoint";
+  EXPECT_EQ(resume(root_ / "bad"), app::kExitBadInput);
+}
+
+}  // namespace
