@@ -19,6 +19,8 @@
 #include "app/state_cache.hpp"
 #include "sim/binary_io.hpp"
 #include "sim/simulation.hpp"
+#include "sim/vtk.hpp"
+#include "sim/watchdog.hpp"
 #include "render/video.hpp"
 
 namespace app {
@@ -91,6 +93,22 @@ std::unique_ptr<sim::Simulation> make_simulation(RunSetup& r) {
   return nullptr;
 }
 
+// The state before a failure, as DIR/vtk/last-good.vtu, for a look at what
+// led up to it.
+void write_last_good_state(const RunSetup& r, const sim::WatchdogError& e) {
+  if (e.last_good_state.empty()) return;
+  try {
+    sim::Simulation good(r.scenario);
+    good.restore_state(e.last_good_state, "the last good state");
+    const fs::path file = r.out / "vtk" / "last-good.vtu";
+    fs::create_directories(file.parent_path());
+    sim::write_vtu(file.string(), good.world(), good.time());
+    std::cerr << "last good state (t = " << good.time() << " s): " << file.string() << '\n';
+  } catch (const std::exception& x) {
+    std::cerr << "error: writing the last good state: " << x.what() << '\n';
+  }
+}
+
 int execute(RunSetup& r) {
   if (r.threads > 0) omp_set_num_threads(r.threads);
   const int threads = omp_get_max_threads();
@@ -131,6 +149,8 @@ int execute(RunSetup& r) {
   } catch (const std::exception& e) {
     release_interrupt();
     std::cerr << "\nerror: " << e.what() << '\n';
+    if (const auto* w = dynamic_cast<const sim::WatchdogError*>(&e))
+      write_last_good_state(r, *w);
     if (observer) {
       const std::size_t done = simulation->results().size();
       const auto& stages = simulation->scenario().stages;

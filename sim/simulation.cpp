@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "sim/seed.hpp"
+#include "sim/watchdog.hpp"
 
 namespace sim {
 
@@ -112,6 +113,26 @@ void Simulation::close_energy_balance(StageResult& r, double kinetic_start,
   e.relative_error = e.external_work != 0 ? residual / std::fabs(e.external_work) : 0.0;
 }
 
+// The watchdog (sim/watchdog.hpp): a non-finite sum stops the run at once; a
+// full scan every kWatchdogScanSteps steps checks every point and, if all
+// are within the limits, keeps the state as the last good one.
+void Simulation::watch(const StageSpec& stage, const StepReport& report) {
+  const long steps = progress_.result.steps;
+  if (step_sums_finite(report) && steps % kWatchdogScanSteps != 0) return;
+  const std::string bad = find_bad_point(world_);
+  if (!bad.empty()) stop_run(stage, bad);
+  if (!step_sums_finite(report)) stop_run(stage, "a sum over the points is not finite");
+  last_good_ = save_state();
+  last_good_time_ = time_;
+}
+
+void Simulation::stop_run(const StageSpec& stage, const std::string& why) const {
+  std::ostringstream msg;
+  msg << "stage '" << stage.name << "', after step " << progress_.result.steps << ", t = "
+      << time_ << " s (stage time " << stage_time_ << " s): " << why;
+  throw WatchdogError(msg.str(), last_good_, last_good_time_);
+}
+
 void Simulation::begin_timed_stage(const StageSpec& stage, Observer& observer) {
   StageProgress& p = progress_;
   p = StageProgress{};
@@ -127,6 +148,8 @@ void Simulation::begin_timed_stage(const StageSpec& stage, Observer& observer) {
   p.max_signal = max_signal_speed(world_);
   p.kinetic_start = kinetic_energy(world_);
   p.elastic_start = elastic_energy(world_);
+  last_good_ = save_state();
+  last_good_time_ = time_;
 }
 
 // The time loop of one stage. Every variable it carries between steps lives
@@ -151,13 +174,22 @@ void Simulation::run_timed_stage(const StageSpec& stage, Observer& observer) {
       r.ended_at_rest = stage_time_ < stage.duration * (1 - kEventSlack);
       break;
     }
-    double dt = choose_time_step(p.max_signal);
+    double dt = 0;
+    try {
+      dt = choose_time_step(p.max_signal);
+    } catch (const SimulationError& e) {
+      stop_run(stage, e.what());
+    }
     double until = stage.duration - stage_time_;
     if (painted) until = std::min(until, p.next_frame * interval - stage_time_);
     if (dt >= until * (1 - kEventSlack)) dt = until;
     const double factor = stage_gravity_factor(stage, stage_time_ + 0.5 * dt);
     const Vec2 g{factor * scenario_.gravity[0], factor * scenario_.gravity[1]};
-    step(world_, StepInput{dt, g, stage.damping}, report);
+    try {
+      step(world_, StepInput{dt, g, stage.damping}, report);
+    } catch (const SimulationError& e) {  // a point left the grid
+      stop_run(stage, e.what());
+    }
     stage_time_ += dt;
     time_ += dt;
     ++r.steps;
@@ -168,6 +200,7 @@ void Simulation::run_timed_stage(const StageSpec& stage, Observer& observer) {
     r.kinetic_energy = report.kinetic_energy;
     r.moving_kinetic_energy = report.moving_kinetic_energy;
     p.max_signal = report.max_signal;
+    watch(stage, report);
     observer.progress(*this, stage, r.steps);
   }
   if (stage.type == StageType::Gravity) gravity_factor_ = 1.0;

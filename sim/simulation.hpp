@@ -51,7 +51,8 @@ class Simulation {
   explicit Simulation(const Scenario& scenario);
 
   // Runs every stage not yet run, in order (all of them, unless a saved state
-  // was restored).
+  // was restored). A run that leaves the watchdog's limits (sim/watchdog.hpp)
+  // throws WatchdogError with the last good state.
   void run(Observer& observer);
 
   // The whole state between two steps, or between two stages: the points,
@@ -80,6 +81,8 @@ class Simulation {
   void close_energy_balance(StageResult& r, double kinetic_start, double elastic_start) const;
   double stage_gravity_factor(const StageSpec& stage, double t) const;
   bool at_rest(const StageSpec& stage, const StageResult& r) const;
+  void watch(const StageSpec& stage, const StepReport& report);
+  [[noreturn]] void stop_run(const StageSpec& stage, const std::string& why) const;
 
   Scenario scenario_;
   World world_;
@@ -99,6 +102,8 @@ class Simulation {
   };
   StageProgress progress_;
   std::chrono::steady_clock::time_point wall_start_;  // of this stage, or of its resumption
+  std::string last_good_;     // save_state() at the watchdog's last passed scan
+  double last_good_time_ = 0;
 };
 
 // A key of the inputs that define the first `stages` stages of a scenario

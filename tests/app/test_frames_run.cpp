@@ -310,6 +310,9 @@ TEST(RunCommand, FailedRunStillPaintsWhatItCaptured) {
   EXPECT_TRUE(fs::is_regular_file(root / "out" / "frames" / "material" / frame_name(0)));
   EXPECT_FALSE(fs::exists(root / "out" / "material.mp4"));
   EXPECT_TRUE(fs::is_regular_file(root / "out" / "summary.json"));
+  // The watchdog hands over the state from before the failure: here the
+  // initial one.
+  EXPECT_TRUE(fs::is_regular_file(root / "out" / "vtk" / "last-good.vtu"));
   EXPECT_EQ(temporaries(root), std::vector<std::string>{});
   fs::remove_all(root);
 }
