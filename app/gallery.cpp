@@ -4,6 +4,7 @@
 // observer keeps the states the figures need.
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -53,6 +54,13 @@ class GalleryObserver : public sim::Observer {
  public:
   GalleryObserver(RunResult& r, FrameRecorder* recorder) : r_(r), recorder_(recorder) {}
 
+  // Saves the state into `saved` when the run has finished its first
+  // `stages` stages, for the next scene that shares them.
+  void save_after(std::size_t stages, std::string* saved) {
+    save_after_ = stages;
+    saved_ = saved;
+  }
+
   void frame(const sim::Simulation& sim, const sim::StageSpec& stage, int frame) override {
     if (recorder_) recorder_->capture(sim.world(), sim.stage_time(), frame, stage.name);
     if (stage.type != sim::StageType::Dynamic) return;
@@ -76,6 +84,7 @@ class GalleryObserver : public sim::Observer {
       r_.runout = res.metrics.runout;
       r_.max_ux = res.metrics.max_soil_ux;
     }
+    if (saved_ && sim.stage_index() == save_after_) *saved_ = sim.save_state();
     if (recorder_ && recorder_->pending() > 0) recorder_->paint_pending();
   }
 
@@ -89,6 +98,8 @@ class GalleryObserver : public sim::Observer {
  private:
   RunResult& r_;
   FrameRecorder* recorder_;
+  std::size_t save_after_ = 0;
+  std::string* saved_ = nullptr;
   Clock::time_point last_ = Clock::now();
 };
 
@@ -128,6 +139,7 @@ class Gallery {
     std::cerr << "running " << s.name << " (" << r->points << " points, h = " << s.cell_size
               << " m)\n";
     GalleryObserver observer(*r, recorder.get());
+    share_gravity_stage(simulation, observer);
     try {
       simulation.run(observer);
     } catch (const sim::ScenarioError&) {
@@ -190,6 +202,25 @@ class Gallery {
     render::write_png(page, (out_ / file).string());
   }
 
+  // Scenes whose gravity stages have the same inputs (sim::stage_prefix_key:
+  // the four friction angles of one resolution) compute it once: the first
+  // saves its state at the end of the stage, the others start from it.
+  void share_gravity_stage(sim::Simulation& simulation, GalleryObserver& observer) {
+    const sim::Scenario& s = simulation.scenario();
+    const std::size_t shared = sim::reusable_stages(s);
+    if (shared == 0) return;
+    std::string& saved = gravity_states_[sim::stage_prefix_key(s, shared)];
+    if (saved.empty()) {
+      observer.save_after(shared, &saved);
+      return;
+    }
+    simulation.restore_state(saved, s.name + ": the saved gravity stage");
+    const sim::StageSpec& last = s.stages[shared - 1];
+    observer.stage_ends(simulation, last, simulation.results()[shared - 1]);
+    std::cerr << "  " << s.name << ": starts from the saved end of stage '" << last.name << "' ("
+              << fmt(simulation.results()[shared - 1].wall_time) << " s wall when computed)\n";
+  }
+
   double run_wall() const { return run_wall_; }
   std::vector<std::string> failures() const {
     std::vector<std::string> f;
@@ -209,6 +240,7 @@ class Gallery {
   fs::path scenarios_, out_;
   bool quick_;
   std::map<std::string, std::unique_ptr<RunResult>> runs_;
+  std::map<std::uint64_t, std::string> gravity_states_;
   std::unique_ptr<FramePainter> painter_;
   double run_wall_ = 0;
 };
