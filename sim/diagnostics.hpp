@@ -12,8 +12,8 @@
 namespace sim {
 
 // Energy of Eq. (3) over a stage, J per metre of thickness. The balance:
-// external_work = kinetic_change + internal_work + damping_loss + wall_loss, where the
-// internal (stress) work splits into elastic_energy_change + plastic_dissipation.
+// external_work = kinetic_change + internal_work + damping_loss + wall_loss + transfer_loss,
+// where the internal (stress) work splits into elastic_energy_change + plastic_dissipation.
 struct EnergyBalance {
   double external_work = 0;          // by gravity
   double kinetic_change = 0;         // of the points
@@ -22,7 +22,8 @@ struct EnergyBalance {
   double plastic_dissipation = 0;    // internal_work - elastic_energy_change
   double damping_loss = 0;           // taken by v := v / (1 + theta)
   double wall_loss = 0;              // taken by no-slip and roller walls (inelastic contact)
-  double relative_error = 0;         // (external - kinetic - internal - damping - wall) / |external|
+  double transfer_loss = 0;          // lost by the point-grid transfers (StepReport::transfer_loss)
+  double relative_error = 0;  // (external - kinetic - internal - damping - wall - transfer) / |external|
 };
 
 struct MaterialMotion {

@@ -78,21 +78,24 @@ void grid_to_points(World& w, const StepInput& in, StepReport& report) {
   const Grid& g = w.grid;
   const int n = static_cast<int>(pts.size());
   const int chunks = (n + kReductionChunk - 1) / kReductionChunk;
-  w.chunk_sums.assign(5 * static_cast<std::size_t>(chunks), 0.0);
+  w.chunk_sums.assign(6 * static_cast<std::size_t>(chunks), 0.0);
   const double keep = 1.0 / (1.0 + in.damping);  // v := v / (1 + theta)
 #pragma omp parallel for schedule(static)
   for (int c = 0; c < chunks; ++c) {
-    double work = 0, kinetic = 0, moving = 0, damped = 0, signal = 0;
+    double work = 0, kinetic = 0, moving = 0, damped = 0, signal = 0, walled = 0;
     const int end = std::min(n, (c + 1) * kReductionChunk);
     for (int p = c * kReductionChunk; p < end; ++p) {
       const Stencil& st = w.stencils[p];
-      double ax = 0, ay = 0, vx = 0, vy = 0;
+      double ax = 0, ay = 0, vx = 0, vy = 0, wx = 0, wy = 0;
       for (int b = 0; b < 3; ++b) {
         const int row = g.node(st.base_i, st.base_j + b);
         for (int a = 0; a < 3; ++a) {
           const double S = st.wx[a] * st.wy[b];
           ax += S * g.ax[row + a];
           ay += S * g.ay[row + a];
+          // A held component's acceleration is all the wall's (its force is zero).
+          if (g.fix_x[row + a]) wx += S * g.ax[row + a];
+          if (g.fix_y[row + a]) wy += S * g.ay[row + a];
           vx += S * g.vx[row + a];
           vy += S * g.vy[row + a];
         }
@@ -109,22 +112,25 @@ void grid_to_points(World& w, const StepInput& in, StepReport& report) {
       work += m * (in.gravity[0] * dx + in.gravity[1] * dy);
       kinetic += 0.5 * m * v2;
       moving += 0.5 * m * (vx * vx + vy * vy);
+      walled += 0.5 * m * in.dt * in.dt * (wx * wx + wy * wy);
       signal = std::max(signal, w.materials[pts.material[p]].wave_speed + std::sqrt(v2));
     }
-    double* sums = &w.chunk_sums[5 * static_cast<std::size_t>(c)];
+    double* sums = &w.chunk_sums[6 * static_cast<std::size_t>(c)];
     sums[0] = work;
     sums[1] = kinetic;
     sums[2] = moving;
     sums[3] = damped;
     sums[4] = signal;
+    sums[5] = walled;
   }
   for (int c = 0; c < chunks; ++c) {
-    const double* sums = &w.chunk_sums[5 * static_cast<std::size_t>(c)];
+    const double* sums = &w.chunk_sums[6 * static_cast<std::size_t>(c)];
     report.gravity_work += sums[0];
     report.kinetic_energy += sums[1];
     report.moving_kinetic_energy += sums[2];
     report.damping_loss += sums[3];
     report.max_signal = std::max(report.max_signal, sums[4]);
+    report.wall_change_on_points += sums[5];
   }
 }
 

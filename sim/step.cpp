@@ -19,6 +19,7 @@ void step(World& w, const StepInput& in, StepReport& report) {
   grid_forces(w, in.gravity);
   update_nodal_momentum(w.grid, in.dt);
   grid_to_points(w, in, report);
+  report.transfer_loss = report.wall_loss - report.wall_change_on_points;
 }
 
 namespace {

@@ -66,6 +66,30 @@ TEST(Transfer, RigidTranslationIsReproduced) {
   EXPECT_NEAR(report.kinetic_energy, 0.5 * mass * (vx * vx + vy * vy), 1e-9 * mass);
 }
 
+TEST(Transfer, WallTransferLossClosesTheKineticEnergyOfAStoppedStep) {
+  // A block resting on a no-slip floor, moving down and sideways, with no
+  // stiffness to speak of: the only change of the step is what the floor
+  // takes. The grid loses wall_loss; the points, which take the interpolated
+  // change (Eq. 30), lose wall_loss + transfer_loss, transfer_loss > 0.
+  sim::Scenario s = simtest::block_scenario({1.0, 0.0}, {2.0, 1.0}, 0.25, 2, {0, 0}, {4, 3});
+  s.boundaries.bottom = sim::BoundaryKind::Fixed;
+  s.materials[0].youngs_modulus = 1e-3;  // forces negligible next to the wall's change
+  sim::World w = sim::make_world(s);
+  for (std::size_t p = 0; p < w.points.size(); ++p) {
+    w.points.vx[p] = 1.0;
+    w.points.vy[p] = -0.5;
+  }
+  const double before = 0.5 * w.points.mass[0] * w.points.size() * 1.25;
+  sim::StepReport report;
+  sim::step(w, sim::StepInput{1e-4, {0, 0}, 0}, report);
+  const double after = report.kinetic_energy + report.damping_loss;
+  EXPECT_GT(report.wall_loss, 0.01 * before);
+  EXPECT_GT(report.transfer_loss, 0.1 * report.wall_loss);
+  EXPECT_NEAR(before - after, report.wall_loss + report.transfer_loss, 1e-7 * before);
+  EXPECT_GT(before - after - report.wall_loss, 0.1 * report.wall_loss)
+      << "wall_loss alone does not close the step";
+}
+
 TEST(Transfer, PointLeavingTheGridIsAClearError) {
   sim::World w = sim::make_world(
       simtest::block_scenario({1.0, 1.0}, {2.0, 1.5}, 0.25, 2, {0, 0}, {3, 2}));
