@@ -33,7 +33,7 @@ std::string read_text(const std::string& path) {
 }
 
 // The trigger of the paper slopes sets the friction angle; the dilation angle
-// may not exceed it.
+// may not exceed it at any moment, so it changes first.
 void set_friction(sim::Scenario& s, double degrees) {
   for (sim::StageSpec& st : s.stages)
     for (sim::MaterialChange& c : st.changes)
@@ -42,7 +42,7 @@ void set_friction(sim::Scenario& s, double degrees) {
         sim::MaterialChange psi = c;
         psi.property = "dilation_angle";
         psi.value = std::min(10.0, degrees) * M_PI / 180;
-        st.changes.push_back(psi);
+        st.changes.insert(st.changes.begin(), psi);  // lowered before the friction angle
         return;
       }
 }

@@ -164,4 +164,58 @@ TEST(ScenarioFuzz, DoubleDamage) {
   }
 }
 
+// The damage a careless edit does to a real scene, aimed rather than random:
+// every body folded into a bow-tie or moved out of the domain, and a grid too
+// fine for the memory budget, is refused with the JSON path of the culprit.
+std::string refusal(const Json& doc, const std::string& label) {
+  try {
+    sim::parse_scenario(doc.dump(), label);
+  } catch (const sim::ScenarioError& e) {
+    return e.what();
+  }
+  return "accepted";
+}
+
+Json polygon_of(const Json& body) {
+  if (body.contains("polygon")) return body.at("polygon");
+  const Json& r = body.at("rectangle");
+  const double x0 = r.at("min")[0], y0 = r.at("min")[1], x1 = r.at("max")[0], y1 = r.at("max")[1];
+  return Json::array({{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}});
+}
+
+TEST(ScenarioFuzz, FoldedMovedAndOversizedScenesAreRefusedAtTheirPath) {
+  int bodies = 0;
+  for (const auto& file : committed_scenarios()) {
+    std::ifstream in(file);
+    const Json doc = Json::parse(in);
+    const std::string name = file.filename().string();
+    const double width = doc.at("domain").at("max")[0].get<double>() -
+                         doc.at("domain").at("min")[0].get<double>();
+    for (std::size_t k = 0; k < doc.at("bodies").size(); ++k) {
+      const std::string at = "bodies[" + std::to_string(k) + "]";
+      Json folded = doc, moved = doc;
+      Json polygon = polygon_of(doc["bodies"][k]);
+      std::swap(polygon[0], polygon[1]);  // edges 1-2 and 3-0 now cross
+      folded["bodies"][k].erase("rectangle");
+      folded["bodies"][k]["polygon"] = polygon;
+      Json shifted = polygon_of(doc["bodies"][k]);
+      for (Json& v : shifted) v[0] = v[0].get<double>() + 5 * width;
+      moved["bodies"][k].erase("rectangle");
+      moved["bodies"][k]["polygon"] = shifted;
+      ++bodies;
+      for (const auto& [what, bad] : {std::make_pair("folded", folded), {"moved", moved}}) {
+        const std::string message = refusal(bad, name);
+        EXPECT_NE(message.find(name + ": " + at + ".polygon"), std::string::npos)
+            << name << " " << at << " " << what << ": " << message;
+      }
+    }
+    Json fine = doc;
+    fine["grid"]["cell_size"] = doc.at("grid").at("cell_size").get<double>() * 1e-4;
+    const std::string message = refusal(fine, name);
+    EXPECT_NE(message.find("grid.cell_size"), std::string::npos) << name << ": " << message;
+    EXPECT_NE(message.find("at most"), std::string::npos) << name << ": " << message;
+  }
+  EXPECT_GE(bodies, 15);  // 8 committed scenes, most with two bodies
+}
+
 }  // namespace
