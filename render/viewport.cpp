@@ -42,8 +42,16 @@ PixelMap fit_window(const WorldWindow& window, const Rect& area) {
                           std::to_string(area.h) + " has no room for the world window");
   }
   const double scale = std::min(area.w / window.width(), area.h / window.height());
-  const double left = std::floor(area.x + (area.w - window.width() * scale) / 2);
-  const double top = std::floor(area.y + (area.h - window.height() * scale) / 2);
+  // The spare room is exactly 0 along the axis that sets the scale, and a
+  // whole number of pixels wherever the window fits evenly; its round-off
+  // must not decide the floor, or a build that rounds differently (an FMA
+  // contraction) shifts the whole plot by a pixel. Pixel positions are below
+  // 2^13, so round-off stays far below kSlack.
+  constexpr double kSlack = 1e-6;
+  const double spare_w = std::max(0.0, area.w - window.width() * scale);
+  const double spare_h = std::max(0.0, area.h - window.height() * scale);
+  const double left = std::floor(area.x + spare_w / 2 + kSlack);
+  const double top = std::floor(area.y + spare_h / 2 + kSlack);
   return PixelMap(window, left, top, scale);
 }
 

@@ -40,6 +40,15 @@ TEST(Viewport, FitKeepsAspectAndCentres) {
   EXPECT_THROW(fit_window(WorldWindow{0, NAN, 0, 1}, Rect{0, 0, 10, 10}), InvalidArgument);
 }
 
+// 617 / 0.3 * 0.3 rounds to just above 617, so the spare width is -1e-13:
+// its floor put the plot a pixel left of its area, and a build that rounds
+// it the other way (FMA) painted every frame a pixel to the right.
+TEST(Viewport, RoundOffOfAFullWidthFitDoesNotShiftThePlot) {
+  const PixelMap m = fit_window(WorldWindow{0, 0.3, 0, 0.1}, Rect{5, 0, 617, 617});
+  EXPECT_DOUBLE_EQ(m.x(0), 5.0);
+  EXPECT_EQ(m.box().x, 5);
+}
+
 TEST(Splat, KnownSquaresPaintExpectedPixels) {
   Cloud c;
   c.add(2, 6, 1, 0.5, 0.0);  // -> x [10, 30), rows [15, 25)
