@@ -73,4 +73,11 @@ struct GalleryOptions {
 };
 int gallery_command(const GalleryOptions& options);
 
+// `landslide validate`: the validation suite (tests/validation/README.md).
+struct ValidateOptions {
+  std::string scenarios;  // "" : ./scenarios
+  bool quick = false;     // coarse resolutions only (the CI version)
+};
+int validate_command(const ValidateOptions& options);
+
 }  // namespace app

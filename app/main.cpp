@@ -78,6 +78,12 @@ int main(int argc, char** argv) {
   gallery_cmd->add_flag("--quick", gallery.quick,
                         "Every run at the 1648-point resolution (h = 1.127 m), for a fast check");
 
+  app::ValidateOptions validate;
+  CLI::App* validate_cmd =
+      cli.add_subcommand("validate", "Run the validation suite and print its table");
+  validate_cmd->add_option("--scenarios", validate.scenarios, "Scenario folder (default: scenarios)");
+  validate_cmd->add_flag("--quick", validate.quick, "Coarse resolutions only (the CI version)");
+
   try {
     cli.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -93,5 +99,6 @@ int main(int argc, char** argv) {
   }
   if (*panel_cmd) return app::panel_command(panel);
   if (*gallery_cmd) return app::gallery_command(gallery);
+  if (*validate_cmd) return app::validate_command(validate);
   return app::kExitBadInput;
 }

@@ -1,0 +1,43 @@
+// The cases of `landslide validate`: each runs committed scenarios and turns
+// the end states into rows of measured value, reference and error.
+#pragma once
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace app {
+
+// One line of the validation table. A row with a tolerance is a check: it
+// passes when |error| <= tolerance (error relative to the reference), or, for
+// an `at_least` row, when value > tolerance.
+struct ValidationRow {
+  std::string case_name;
+  std::string measure;
+  double value = 0;
+  std::string reference;  // the reference value, or what there is instead, as text
+  double error = 0;
+  bool has_error = false;
+  double tolerance = -1;  // < 0: reported, not checked
+  bool at_least = false;  // the check is value > tolerance
+  double wall = -1;       // s of simulation behind the row (< 0: none)
+  bool checked() const { return at_least || (tolerance >= 0 && has_error); }
+  bool passed() const {
+    if (at_least) return value > tolerance;
+    return !checked() || std::fabs(error) <= tolerance;
+  }
+};
+
+struct ValidationSuite {
+  std::string scenarios;  // folder holding validation/ and paper-slope-*.json
+  bool quick = false;     // coarse resolutions only, for CI
+};
+
+// Largest energy balance error (Eq. 3) of a run's timed stages that a row may show.
+constexpr double kEnergyTolerance = 0.02;
+
+std::vector<ValidationRow> elastic_column_case(const ValidationSuite& suite);
+std::vector<ValidationRow> bui_column_case(const ValidationSuite& suite);
+std::vector<ValidationRow> paper_slope_energy_case(const ValidationSuite& suite);
+
+}  // namespace app
