@@ -16,6 +16,7 @@
 
 #include "app/commands.hpp"
 #include "app/frames.hpp"
+#include "app/gallery_observer.hpp"
 #include "app/gallery_parts.hpp"
 #include "render/error.hpp"
 #include "render/font.hpp"
@@ -31,6 +32,9 @@ namespace fs = std::filesystem;
 namespace {
 
 using gallery::copy_atomically;
+using gallery::field_index;
+using gallery::GalleryObserver;
+using gallery::kFields;
 using gallery::ending;
 using gallery::fmt;
 using gallery::RunResult;
@@ -38,70 +42,6 @@ using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point t) {
   return std::chrono::duration<double>(Clock::now() - t).count();
 }
-
-// The fields every run keeps (values are captured for all of them).
-const std::vector<Field> kFields = {Field::DisplacementX, Field::StressYY, Field::RelativeYield};
-std::size_t field_index(Field f) {
-  for (std::size_t k = 0; k < kFields.size(); ++k)
-    if (kFields[k] == f) return k;
-  return 0;
-}
-
-// Slide times (s into the slide) the figures show.
-const std::vector<double> kSlideTimes = {3, 4, 8, 12, 16};
-
-class GalleryObserver : public sim::Observer {
- public:
-  GalleryObserver(RunResult& r, FrameRecorder* recorder) : r_(r), recorder_(recorder) {}
-
-  // Saves the state into `saved` when the run has finished its first
-  // `stages` stages, for the next scene that shares them.
-  void save_after(std::size_t stages, std::string* saved) {
-    save_after_ = stages;
-    saved_ = saved;
-  }
-
-  void frame(const sim::Simulation& sim, const sim::StageSpec& stage, int frame) override {
-    if (recorder_) recorder_->capture(sim.world(), sim.stage_time(), frame, stage.name);
-    if (stage.type != sim::StageType::Dynamic) return;
-    r_.last = capture_frame(sim.world(), kFields, frame, sim.stage_time(), stage.name);
-    r_.has_last = true;
-    r_.slide_frames.push_back(
-        capture_frame(sim.world(), {Field::DisplacementX}, frame, sim.stage_time(), stage.name));
-    for (const double t : kSlideTimes)
-      if (std::abs(sim.stage_time() - t) < 1e-6)
-        r_.at[t] = capture_frame(sim.world(), kFields, frame, sim.stage_time(), stage.name);
-  }
-
-  void stage_ends(const sim::Simulation& sim, const sim::StageSpec& stage,
-                  const sim::StageResult& res) override {
-    if (stage.type == sim::StageType::Gravity)
-      r_.gravity_end = capture_frame(sim.world(), kFields, 0, sim.stage_time(), stage.name);
-    if (stage.type == sim::StageType::Dynamic) {
-      r_.slide_end = capture_frame(sim.world(), kFields, 0, sim.stage_time(), stage.name);
-      r_.slide_time = res.simulated_time;
-      r_.at_rest = res.ended_at_rest;
-      r_.runout = res.metrics.runout;
-      r_.max_ux = res.metrics.max_soil_ux;
-    }
-    if (saved_ && sim.stage_index() == save_after_) *saved_ = sim.save_state();
-    if (recorder_ && recorder_->pending() > 0) recorder_->paint_pending();
-  }
-
-  void progress(const sim::Simulation& sim, const sim::StageSpec& stage, long steps) override {
-    if (Clock::now() - last_ < std::chrono::seconds(10)) return;
-    last_ = Clock::now();
-    std::cerr << "  " << sim.scenario().name << ": " << stage.name << " t = " << sim.stage_time()
-              << " s, " << steps << " steps\n";
-  }
-
- private:
-  RunResult& r_;
-  FrameRecorder* recorder_;
-  std::size_t save_after_ = 0;
-  std::string* saved_ = nullptr;
-  Clock::time_point last_ = Clock::now();
-};
 
 class Gallery {
  public:
@@ -184,15 +124,21 @@ class Gallery {
     const std::size_t k = field_index(field);
     const sim::Scenario& s0 = panels.front().first->scenario;
     const FieldStyle style = field_style(field, s0);
+    // A run that failed before its first captured state leaves an empty
+    // frame: it is painted as an empty plot (its caption says why).
+    std::vector<Frame> frames;
+    for (const auto& p : panels) {
+      frames.push_back(*p.second);
+      frames.back().values.resize(kFields.size());
+    }
     std::vector<const std::vector<float>*> values;
-    for (const auto& p : panels) values.push_back(&p.second->values[k]);
+    for (const Frame& f : frames) values.push_back(&f.values[k]);
     const Range range = field_range(style, values);
     std::vector<render::Image> images;
-    for (const auto& p : panels) {
-      const sim::Scenario& s = p.first->scenario;
-      Frame one = *p.second;
-      const render::FrameSpec spec = frame_spec(s, style, s.output.colour_map, range, one);
-      images.push_back(painter(s).paint(spec, one, k));
+    for (std::size_t i = 0; i < panels.size(); ++i) {
+      const sim::Scenario& s = panels[i].first->scenario;
+      const render::FrameSpec spec = frame_spec(s, style, s.output.colour_map, range, frames[i]);
+      images.push_back(painter(s).paint(spec, frames[i], k));
     }
     const int n = int(images.size());
     const int cols = n >= 4 ? 2 : 1;
@@ -395,8 +341,9 @@ int gallery_command(const GalleryOptions& o) {
     });
     fs::remove_all(out / ".work");
     for (const std::string& base : {std::string("anim-paper-slope-phi20-displacement-x"), side_by_side})
-      std::cout << "animation: " << (out / (base + ".mp4")).string() << ", "
-                << (out / (base + ".gif")).string() << '\n';
+      if (fs::exists(out / (base + ".mp4")))  // none where a run failed before its slide
+        std::cout << "animation: " << (out / (base + ".mp4")).string() << ", "
+                  << (out / (base + ".gif")).string() << '\n';
     std::cout << "gallery: " << fmt(seconds_since(total)) << " s in all -> " << out.string()
               << std::endl;
     const std::vector<std::string> failures = g.failures();

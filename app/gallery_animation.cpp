@@ -44,7 +44,7 @@ std::string fmt(double v, int digits) {
 
 std::string ending(const RunResult& r) {
   if (!r.failed.empty())
-    return "run FAILED after " + fmt(r.slide_time) + " s (a point left the grid): last frame";
+    return "run FAILED after " + fmt(r.slide_time) + " s: last frame";
   return "end at " + fmt(r.slide_time) + " s" + (r.at_rest ? " (at rest)" : "") + ", runout " +
          fmt(r.runout) + " m";
 }

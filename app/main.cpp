@@ -71,7 +71,8 @@ int main(int argc, char** argv) {
 
   app::GalleryOptions gallery;
   CLI::App* gallery_cmd = cli.add_subcommand(
-      "gallery", "Regenerate the paper's figures (5, 6, 9-12) and the phi = 20 animation");
+      "gallery", "Regenerate the paper's figures (5, 6, 9-12), the phi = 20 animation and the four "
+      "friction angles side by side");
   gallery_cmd->add_option("--out", gallery.out, "Output directory")->required();
   gallery_cmd->add_option("--scenarios", gallery.scenarios,
                           "Folder of the paper-slope scenarios (default: scenarios)");

@@ -98,6 +98,33 @@ TEST(Gallery, EveryFigureAndBothAnimationsFromCoarseScenes) {
   fs::remove_all(root);
 }
 
+// A scene that fails at its first step (a fixed time step 100 times the
+// stable one) leaves no state at all: its panels are empty plots captioned
+// FAILED, every figure is still written, and the command exits 1.
+TEST(Gallery, ARunThatFailsBeforeAnyStateStillGivesEveryFigure) {
+  if (!render::ffmpeg_available(nullptr)) GTEST_SKIP() << "ffmpeg is not available";
+  const fs::path root =
+      fs::temp_directory_path() / ("landslide-gallery-failed-" + std::to_string(::getpid()));
+  fs::remove_all(root);
+  fs::create_directories(root / "scenarios");
+  for (const char* name : kScenes) write_coarse_copy(name, root / "scenarios");
+  const fs::path phi10 = root / "scenarios" / "paper-slope-phi10.json";
+  std::ifstream in(phi10);
+  nlohmann::json s = nlohmann::json::parse(in);
+  in.close();
+  s["time_step"] = {{"fixed", 0.5}};
+  std::ofstream(phi10) << s.dump(1);
+  app::GalleryOptions o;
+  o.out = (root / "gallery").string();
+  o.scenarios = (root / "scenarios").string();
+  EXPECT_EQ(app::gallery_command(o), app::kExitFailed);
+  for (const char* fig : {"fig05-vertical-stress.png", "fig06-horizontal-displacement.png",
+                          "fig09-slide-4-8-12-16s.png", "fig10-relative-yield-3s.png",
+                          "fig11-resolutions.png", "fig12-friction-angles.png"})
+    EXPECT_TRUE(fs::is_regular_file(root / "gallery" / fig)) << fig;
+  fs::remove_all(root);
+}
+
 // A scenarios folder without the seven scenes: exit 2 before anything runs.
 TEST(GalleryCommand, MissingScenesAreBadInputAndNothingIsWritten) {
   const fs::path root =
