@@ -1,9 +1,20 @@
 // Point-steps per second of the GIMP step on the scenes of issue 6, with 1 and
-// 2 threads, and the cost per point-step as the scene grows. Prints figures;
-// never fails on timing.
+// 2 threads, the cost per point-step as the scene grows, and the memory per
+// point. Prints figures; never fails on timing.
+//
+// Memory is measured two ways. "World B/pt": the bytes the solver's state
+// holds after the run, the capacities of every std::vector in sim::World
+// (points, grid, materials, per-step scratch) times their element sizes,
+// divided by the points; the grid's share is printed on its own, as it grows
+// with the domain, not the points. "RSS B/pt": the peak resident set of a
+// child process that runs only that scene (20 steps, 1 thread; its VmHWM)
+// less that of a child that loads the scenes and runs none,
+// divided by the points: what the process really took, allocator and
+// Scenario included.
 //
 // Usage: throughput [STEPS]   (default 300 steps per scene and thread count)
 #include <omp.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
@@ -51,9 +62,35 @@ sim::Scenario granular_column() {
   return s;
 }
 
+template <typename T>
+double bytes(const std::vector<T>& v) {
+  return static_cast<double>(v.capacity() * sizeof(T));
+}
+
+// Bytes held by every std::vector in the world (keep in step with
+// sim/world.hpp, sim/particles.hpp and sim/grid.hpp); the grid's in `grid`.
+double vector_bytes(const sim::World& w, double* grid) {
+  const sim::Particles& p = w.points;
+  double points = bytes(p.material) + bytes(p.yielded);
+  for (const auto* v : {&p.x, &p.y, &p.vx, &p.vy, &p.mass, &p.density, &p.sxx, &p.syy, &p.sxy,
+                        &p.szz, &p.x0, &p.y0, &p.ref_x, &p.ref_y})
+    points += bytes(*v);
+  const sim::Grid& g = w.grid;
+  double nodes = bytes(g.points) + bytes(g.fix_x) + bytes(g.fix_y) + bytes(g.row_sums);
+  for (const auto* v : {&g.mass, &g.px, &g.py, &g.vx, &g.vy, &g.fx, &g.fy, &g.ax, &g.ay})
+    nodes += bytes(*v);
+  const double scratch = bytes(w.stencils) + bytes(w.bin_key) + bytes(w.order) +
+                         bytes(w.band_start) + bytes(w.bin_count) + bytes(w.chunk_sums) +
+                         bytes(w.material_specs) + bytes(w.materials);
+  if (grid) *grid = nodes;
+  return points + nodes + scratch;
+}
+
 // Runs `steps` steps of the scene's slide (a dynamic stage under full gravity,
-// no frames, no rest test) and returns point-steps per second.
-double run(sim::Scenario s, int threads, int steps, std::size_t& points, double& dt) {
+// no frames, no rest test) and returns point-steps per second; the world's
+// vector bytes after the run go to `world_bytes` (grid share: `grid_bytes`).
+double run(sim::Scenario s, int threads, int steps, std::size_t& points, double& dt,
+           double* world_bytes = nullptr, double* grid_bytes = nullptr) {
   sim::StageSpec stage;
   stage.type = sim::StageType::Dynamic;
   stage.name = "bench";
@@ -61,12 +98,14 @@ double run(sim::Scenario s, int threads, int steps, std::size_t& points, double&
   s.output.frame_interval = 0;
   s.output.vtk = "none";
   omp_set_num_threads(threads);
-  sim::Simulation probe(s);
-  points = probe.world().points.size();
+  double signal = 0;
+  {  // the probe is gone before the measured run, so it adds no memory to it
+    sim::Simulation probe(s);
+    points = probe.world().points.size();
+    for (const auto& m : probe.world().materials) signal = std::max(signal, m.wave_speed);
+  }
   // About `steps` steps: the duration of that many steps at rest; the Courant
   // step shortens a little as the points speed up, and the steps taken count.
-  double signal = 0;
-  for (const auto& m : probe.world().materials) signal = std::max(signal, m.wave_speed);
   dt = s.time_step.courant * s.cell_size / signal;
   s.stages[0].duration = dt * steps;
   sim::Simulation simulation(s);
@@ -75,30 +114,78 @@ double run(sim::Scenario s, int threads, int steps, std::size_t& points, double&
   simulation.run(quiet);
   const double wall =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (world_bytes) *world_bytes = vector_bytes(simulation.world(), grid_bytes);
   return simulation.results().back().steps * static_cast<double>(points) / wall;
+}
+
+// Peak resident set of this process, bytes: VmHWM of /proc/self/status. It
+// belongs to the process's own memory map, so a child does not inherit its
+// parent's peak through the spawn (wait4's ru_maxrss does: a vfork-style
+// spawn runs on the parent's map until exec, and exec keeps that map's peak).
+double own_peak_rss() {
+  std::FILE* f = std::fopen("/proc/self/status", "r");
+  if (!f) return NAN;
+  char line[256];
+  double kib = NAN;
+  while (std::fgets(line, sizeof line, f))
+    if (std::sscanf(line, "VmHWM: %lf kB", &kib) == 1) break;
+  std::fclose(f);
+  return kib * 1024.0;
+}
+
+// Peak resident set, in bytes, of a child process (this program) that runs
+// scene `scene` for 20 steps on 1 thread, or only loads the scenes for -1.
+double child_peak_rss(int scene) {
+  char self[4096];
+  const ssize_t n = readlink("/proc/self/exe", self, sizeof self - 1);
+  if (n <= 0) return NAN;
+  self[n] = 0;
+  const std::string command =
+      "'" + std::string(self) + "' --peak-rss-child " + std::to_string(scene);
+  std::FILE* child = popen(command.c_str(), "r");
+  if (!child) return NAN;
+  double bytes = NAN;
+  if (std::fscanf(child, "%lf", &bytes) != 1) bytes = NAN;
+  return pclose(child) == 0 ? bytes : NAN;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  const int steps = argc > 1 ? std::atoi(argv[1]) : 300;
+  const bool child = argc > 2 && std::string(argv[1]) == "--peak-rss-child";
+  const int steps = child ? 20 : argc > 1 ? std::atoi(argv[1]) : 300;
   std::vector<Scene> scenes = {{"elastic column (16 cells)", load("elastic-column")},
                                {"granular column, Mohr-Coulomb", granular_column()},
                                {"paper slope phi=20, n1648", load("paper-slope-phi20-n1648")},
                                {"paper slope phi=20, n8370", load("paper-slope-phi20")},
                                {"paper slope phi=20, n28724", load("paper-slope-phi20-n28724")},
                                {"paper slope phi=20, n67016", load("paper-slope-phi20-n67016")}};
-  std::printf("about %d steps per run at the scene's Courant number, under full gravity, no frames\n",
-              steps);
-  std::printf("%-32s %8s %10s %14s %14s %16s\n", "scene", "points", "dt [s]",
-              "1 thread Mpt/s", "2 thr. Mpt/s", "core-ns/pt-step");
-  for (const Scene& scene : scenes) {
+  if (child) {
+    const int k = std::atoi(argv[2]);
     std::size_t points = 0;
     double dt = 0;
-    const double one = run(scene.scenario, 1, steps, points, dt);
-    const double two = run(scene.scenario, 2, steps, points, dt);
-    std::printf("%-32s %8zu %10.3e %14.2f %14.2f %12.1f\n", scene.label.c_str(), points, dt,
-                one / 1e6, two / 1e6, 2e9 / two);
+    if (k >= 0 && k < static_cast<int>(scenes.size())) run(scenes[k].scenario, 1, steps, points, dt);
+    std::printf("%.0f\n", own_peak_rss());
+    return 0;
   }
+  std::printf("about %d steps per run at the scene's Courant number, under full gravity, no frames\n",
+              steps);
+  std::printf("%-32s %8s %10s %14s %14s %16s %10s %10s %10s\n", "scene", "points", "dt [s]",
+              "1 thread Mpt/s", "2 thr. Mpt/s", "core-ns/pt-step", "World B/pt", "grid B/pt",
+              "RSS B/pt");
+  const double baseline_rss = child_peak_rss(-1);
+  for (std::size_t k = 0; k < scenes.size(); ++k) {
+    std::size_t points = 0;
+    double dt = 0, world = 0, grid = 0;
+    const double one = run(scenes[k].scenario, 1, steps, points, dt, &world, &grid);
+    const double two = run(scenes[k].scenario, 2, steps, points, dt);
+    const double rss = child_peak_rss(static_cast<int>(k)) - baseline_rss;
+    std::printf("%-32s %8zu %10.3e %14.2f %14.2f %12.1f %14.0f %10.0f %10.0f\n",
+                scenes[k].label.c_str(), points, dt, one / 1e6, two / 1e6, 2e9 / two,
+                world / points, grid / points, rss / points);
+  }
+  std::printf("World B/pt: std::vector capacities in sim::World after the 1-thread run (grid "
+              "included); RSS B/pt: peak RSS of a child running the scene alone, less an idle "
+              "child's\n");
   return 0;
 }
