@@ -40,19 +40,27 @@ namespace {
 
 // Stable counting sort of the points by base node, then cut into bands of
 // kBandRows node rows. Sorting keeps neighbours close in memory and fixes the
-// order in which each node's sums are taken.
+// order in which each node's sums are taken. The bins cover only the base
+// nodes of this step's window (row-major, as the grid), so a scene pays for
+// the nodes near its material, not for the whole mesh.
 void sort_into_bands(World& w) {
   Grid& g = w.grid;
   const int n = static_cast<int>(w.points.size());
-  const std::size_t bins = static_cast<std::size_t>(g.nx) * g.ny;
+  const int width = g.i_end - 2 - g.i_begin;  // base nodes per row in the window
+  const int base_rows = g.j_end - 2 - g.j_begin;
+  const std::size_t bins = static_cast<std::size_t>(std::max(width, 0)) * std::max(base_rows, 0);
   w.bin_count.assign(bins + 1, 0);
-  for (int p = 0; p < n; ++p) ++w.bin_count[w.bin_key[p] + 1];
+  for (int p = 0; p < n; ++p) {
+    const Stencil& st = w.stencils[p];
+    w.bin_key[p] = (st.base_j - g.j_begin) * width + (st.base_i - g.i_begin);
+    ++w.bin_count[w.bin_key[p] + 1];
+  }
   for (std::size_t b = 0; b < bins; ++b) w.bin_count[b + 1] += w.bin_count[b];
   const int rows = g.j_end - g.j_begin;
   const int bands = (rows + kBandRows - 1) / kBandRows;
   w.band_start.resize(static_cast<std::size_t>(bands) + 1);
   for (int b = 0; b <= bands; ++b)
-    w.band_start[b] = w.bin_count[g.node(0, g.j_begin + std::min(b * kBandRows, rows))];
+    w.band_start[b] = w.bin_count[static_cast<std::size_t>(std::min(b * kBandRows, base_rows)) * width];
   w.order.resize(n);
   for (int p = 0; p < n; ++p) w.order[w.bin_count[w.bin_key[p]]++] = p;
 }
@@ -89,7 +97,6 @@ void locate_points(World& w) {
       bad = std::min(bad, p);
       continue;
     }
-    w.bin_key[p] = g.node(st.base_i, st.base_j);
     i_lo = std::min(i_lo, st.base_i);
     i_hi = std::max(i_hi, st.base_i);
     j_lo = std::min(j_lo, st.base_j);
