@@ -2,13 +2,13 @@
 //
 // 1. The laterally confined elastic column (scenarios/elastic-column.json)
 //    against its closed form (sim/elastic_column.hpp, method notes section 5),
-//    at 4..32 cells over the height, 1x1 and 2x2 points per cell, Courant
-//    0.1, 0.25, 0.5: relative L2 error of sigma_yy.
+//    at 4..32 cells over the height (--full: also 64), 1x1 and 2x2 points per
+//    cell, Courant 0.1, 0.25, 0.5: relative L2 error of sigma_yy.
 // 2. The paper's slope at phi = 20 deg (Andersen & Andersen, Section 7) at the
-//    1648- and 8370-point resolutions (--full adds 28724), same Courant
-//    numbers, against the finest run (finest resolution, smallest Courant):
-//    relative runout error and RMS difference of the final free surface
-//    (slope_surface.hpp).
+//    1648- and 8370-point resolutions (--full adds 28724, not at Courant 0.1:
+//    too long), same Courant numbers, against the finest run (finest
+//    resolution, smallest Courant): relative runout error and RMS difference
+//    of the final free surface (slope_surface.hpp).
 // Prints both tables and writes accuracy-elastic-column.png and
 // accuracy-paper-slope.png (wall seconds on x, error on y, log-log). Prints
 // figures; never fails on timing.
