@@ -132,7 +132,10 @@ int execute(RunSetup& r) {
                 << cached_state_path(r.source.state_cache, r.scenario).string() << '\n';
     observer = std::make_unique<RunObserver>(r.scenario, r.out, threads, std::move(recorder),
                                              r.source);
-    if (r.checkpoint) observer->resume(*r.checkpoint, simulation->time());
+    if (r.checkpoint)
+      observer->resume(*r.checkpoint, simulation->time());
+    else
+      observer->remove_checkpoint();  // an earlier run's: `resume` must not pick it up
     if (r.source.reused_stages > 0) observer->stages_restored(*simulation);
     catch_interrupt();
     simulation->run(*observer);
