@@ -19,7 +19,7 @@ namespace app {
 namespace {
 
 std::string error_text(const ValidationRow& r) {
-  if (r.at_least) return "";
+  if (r.at_least || r.at_most) return "";
   if (!r.has_error) return "-";
   char text[32];
   std::snprintf(text, sizeof text, "%+.2f %%", 100 * r.error);
@@ -30,6 +30,8 @@ std::string tolerance_text(const ValidationRow& r) {
   char text[32];
   if (r.at_least)
     std::snprintf(text, sizeof text, "> %g", r.tolerance);
+  else if (r.at_most)
+    std::snprintf(text, sizeof text, "< %.4g", r.tolerance);
   else if (r.checked())
     std::snprintf(text, sizeof text, "%g %%", 100 * r.tolerance);
   else

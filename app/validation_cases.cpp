@@ -58,24 +58,25 @@ ValidationRow compared(const std::string& case_name, const std::string& measure,
   return r;
 }
 
-// The largest energy balance error of Eq. (3) over the run's gravity and
-// dynamic stages, checked against kEnergyTolerance, and that stage's transfer
-// loss (StepReport::transfer_loss) as a share of its external work, reported.
+// The energy balance error of Eq. (3) of each gravity and dynamic stage of the
+// run, checked against kEnergyTolerance, and the stage's transfer loss
+// (StepReport::transfer_loss) as a share of its external work, reported. The
+// first row carries the run's wall time.
 std::vector<ValidationRow> energy_rows(const std::string& case_name, const Run& run) {
-  const sim::StageResult* worst = nullptr;
-  for (const sim::StageResult& s : run.simulation->results())
-    if (s.type != sim::StageType::MaterialChange &&
-        (!worst || std::fabs(s.energy.relative_error) > std::fabs(worst->energy.relative_error)))
-      worst = &s;
-  if (!worst) return {};
-  const sim::EnergyBalance& e = worst->energy;
-  ValidationRow r = row(case_name, "energy balance error (Eq. 3), " + worst->name, e.relative_error, "0");
-  r.error = e.relative_error;
-  r.has_error = true;
-  r.tolerance = kEnergyTolerance;
-  r.wall = run.wall;
-  const double share = e.external_work != 0 ? e.transfer_loss / std::fabs(e.external_work) : 0.0;
-  return {r, row(case_name, "transfer loss / external work, " + worst->name, share, "-")};
+  std::vector<ValidationRow> rows;
+  for (const sim::StageResult& s : run.simulation->results()) {
+    if (s.type == sim::StageType::MaterialChange) continue;
+    const sim::EnergyBalance& e = s.energy;
+    ValidationRow r = row(case_name, "energy balance error (Eq. 3), " + s.name, e.relative_error, "0");
+    r.error = e.relative_error;
+    r.has_error = true;
+    r.tolerance = kEnergyTolerance;
+    if (rows.empty()) r.wall = run.wall;
+    rows.push_back(r);
+    const double share = e.external_work != 0 ? e.transfer_loss / std::fabs(e.external_work) : 0.0;
+    rows.push_back(row(case_name, "transfer loss / external work, " + s.name, share, "-"));
+  }
+  return rows;
 }
 
 std::string cells_label(const std::string& base, int cells) {
@@ -87,8 +88,9 @@ std::string cells_label(const std::string& base, int cells) {
 // The column of scenarios/validation/elastic-column-n*.json: sigma_yy and the
 // settlement against the closed form (sim/elastic_column.hpp) per resolution,
 // and the observed order of both errors. With 2x2 points per cell the stress
-// is constant per cell, so its L2 error cannot fall below sqrt(3) / (4 n)
-// (tests/sim/test_elastic_column.cpp); each run is held to 1.1 times that.
+// is constant per cell while the points keep to their cells, so its L2 error
+// is about sqrt(3) / (4 n) (tests/sim/test_elastic_column.cpp); each run is
+// held below 1.1 times that, as the test does.
 std::vector<ValidationRow> elastic_column_case(const ValidationSuite& suite) {
   std::vector<ValidationRow> rows;
   std::vector<double> h, syy, settlement;
@@ -100,11 +102,11 @@ std::vector<ValidationRow> elastic_column_case(const ValidationSuite& suite) {
                                                std::to_string(n) + ".json");
     const Run run = run_quietly(s);
     const sim::ElasticColumnErrors e = sim::elastic_column_errors(s, run.simulation->world());
+    const double floor = std::sqrt(3.0) / (4.0 * n);
     ValidationRow stress = row(name, "sigma_yy relative L2 error", e.syy,
-                               "closed form; floor " + fmt("%.4f", std::sqrt(3.0) / (4.0 * n)));
-    stress.error = e.syy / (std::sqrt(3.0) / (4.0 * n)) - 1.0;  // relative to the floor
-    stress.has_error = true;
-    stress.tolerance = 0.1;
+                               "closed form; floor " + fmt("%.4f", floor));
+    stress.at_most = true;
+    stress.tolerance = 1.1 * floor;
     rows.push_back(stress);
     ValidationRow u = row(name, "settlement relative L2 error", e.settlement, "closed form");
     rows.push_back(u);
@@ -179,7 +181,7 @@ ColumnShape column_shape(const sim::Scenario& s, const sim::World& w, const sim:
 std::vector<ValidationRow> bui_column_case(const ValidationSuite& suite) {
   const sim::Scenario base = sim::load_scenario(suite.scenarios + "/validation/bui2008-column.json");
   const std::vector<double> sizes = suite.quick ? std::vector<double>{0.01}
-                                                : std::vector<double>{0.01, 0.005, 0.0025, 0.00125};
+                                                : std::vector<double>{0.01, 0.005, 0.0025};
   const double phi = 19.8, H = 0.1;
   std::vector<ValidationRow> rows;
   std::vector<double> runouts;

@@ -10,7 +10,8 @@ namespace app {
 
 // One line of the validation table. A row with a tolerance is a check: it
 // passes when |error| <= tolerance (error relative to the reference), or, for
-// an `at_least` row, when value > tolerance.
+// an `at_least` row, when value > tolerance, for an `at_most` row when
+// value < tolerance.
 struct ValidationRow {
   std::string case_name;
   std::string measure;
@@ -20,10 +21,12 @@ struct ValidationRow {
   bool has_error = false;
   double tolerance = -1;  // < 0: reported, not checked
   bool at_least = false;  // the check is value > tolerance
+  bool at_most = false;   // the check is value < tolerance
   double wall = -1;       // s of simulation behind the row (< 0: none)
-  bool checked() const { return at_least || (tolerance >= 0 && has_error); }
+  bool checked() const { return at_least || at_most || (tolerance >= 0 && has_error); }
   bool passed() const {
     if (at_least) return value > tolerance;
+    if (at_most) return value < tolerance;
     return !checked() || std::fabs(error) <= tolerance;
   }
 };
