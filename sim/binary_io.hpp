@@ -21,6 +21,11 @@ class StateError : public std::runtime_error {
 
 class BinaryWriter {
  public:
+  BinaryWriter() = default;
+  // Writes into `buffer`'s storage (its content is dropped): a state saved
+  // again and again reuses its memory instead of faulting in fresh pages.
+  explicit BinaryWriter(std::string buffer) : bytes_(std::move(buffer)) { bytes_.clear(); }
+
   template <class T>
   void put(const T& v) {
     static_assert(std::is_trivially_copyable<T>::value, "raw bytes only");

@@ -93,9 +93,10 @@ void grid_to_points(World& w, const StepInput& in, StepReport& report) {
           const double S = st.wx[a] * st.wy[b];
           ax += S * g.ax[row + a];
           ay += S * g.ay[row + a];
-          // A held component's acceleration is all the wall's (its force is zero).
-          if (g.fix_x[row + a]) wx += S * g.ax[row + a];
-          if (g.fix_y[row + a]) wy += S * g.ay[row + a];
+          // A held component's acceleration is all the wall's (its force is
+          // zero). Masked by a multiply, not a branch: the same sums, faster.
+          wx += S * g.fix_x[row + a] * g.ax[row + a];
+          wy += S * g.fix_y[row + a] * g.ay[row + a];
           vx += S * g.vx[row + a];
           vy += S * g.vy[row + a];
         }

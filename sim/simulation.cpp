@@ -123,7 +123,7 @@ void Simulation::watch(const StageSpec& stage, const StepReport& report) {
   const std::string bad = find_bad_point(world_);
   if (!bad.empty()) stop_run(stage, bad);
   if (!step_sums_finite(report)) stop_run(stage, "a sum over the points is not finite");
-  last_good_ = save_state();
+  last_good_ = save_state(std::move(last_good_));
   last_good_time_ = time_;
 }
 
@@ -149,7 +149,7 @@ void Simulation::begin_timed_stage(const StageSpec& stage, Observer& observer) {
   p.max_signal = max_signal_speed(world_);
   p.kinetic_start = kinetic_energy(world_);
   p.elastic_start = elastic_energy(world_);
-  last_good_ = save_state();
+  last_good_ = save_state(std::move(last_good_));
   last_good_time_ = time_;
 }
 

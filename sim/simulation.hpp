@@ -61,6 +61,8 @@ class Simulation {
   // continues bit-identically. restore_state throws StateError (naming
   // `label`) for a state of another scenario, build or point count.
   std::string save_state() const;
+  // The same, written into `buffer`'s memory (for states saved over and over).
+  std::string save_state(std::string buffer) const;
   // After a failed restore the Simulation must not be run.
   void restore_state(const std::string& bytes, const std::string& label);
 

@@ -152,8 +152,10 @@ std::size_t reusable_stages(const Scenario& s) {
   return 0;
 }
 
-std::string Simulation::save_state() const {
-  BinaryWriter w;
+std::string Simulation::save_state() const { return save_state(std::string()); }
+
+std::string Simulation::save_state(std::string buffer) const {
+  BinaryWriter w(std::move(buffer));
   w.put(kMagic);
   w.put(kByteOrder);
   const std::size_t defined = stage_index_ + (progress_.started ? 1 : 0);
