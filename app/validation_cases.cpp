@@ -12,6 +12,7 @@
 #include <memory>
 
 #include "sim/elastic_column.hpp"
+#include "app/progress.hpp"
 #include "sim/simulation.hpp"
 
 namespace app {
@@ -23,20 +24,38 @@ struct Run {
   double wall = 0;
 };
 
-Run run_quietly(const sim::Scenario& s) {
-  Run r;
-  const auto start = std::chrono::steady_clock::now();
-  r.simulation = std::make_unique<sim::Simulation>(s);
-  sim::Observer quiet;
-  r.simulation->run(quiet);
-  r.wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return r;
-}
-
 std::string fmt(const char* format, double v) {
   char text[64];
   std::snprintf(text, sizeof text, format, v);
   return text;
+}
+
+// Progress of one validation run on stderr (the table goes to stdout at the
+// end): the full suite runs for minutes.
+class RunProgress : public sim::Observer {
+ public:
+  void progress(const sim::Simulation& sim, const sim::StageSpec& stage, long steps) override {
+    bar_.update(sim.scenario().name + " " + stage.name, sim.stage_time(), stage.duration, steps);
+  }
+  void stage_ends(const sim::Simulation& sim, const sim::StageSpec& stage,
+                  const sim::StageResult& r) override {
+    if (stage.type != sim::StageType::MaterialChange)
+      bar_.finish(sim.scenario().name + " " + stage.name + ": " + std::to_string(r.steps) +
+                  " steps, " + fmt("%.1f s wall", r.wall_time));
+  }
+
+ private:
+  Progress bar_;
+};
+
+Run run_with_progress(const sim::Scenario& s) {
+  Run r;
+  const auto start = std::chrono::steady_clock::now();
+  r.simulation = std::make_unique<sim::Simulation>(s);
+  RunProgress progress;
+  r.simulation->run(progress);
+  r.wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return r;
 }
 
 ValidationRow row(const std::string& case_name, const std::string& measure, double value,
@@ -100,7 +119,7 @@ std::vector<ValidationRow> elastic_column_case(const ValidationSuite& suite) {
     const std::string name = cells_label("elastic column", n);
     const sim::Scenario s = sim::load_scenario(suite.scenarios + "/validation/elastic-column-n" +
                                                std::to_string(n) + ".json");
-    const Run run = run_quietly(s);
+    const Run run = run_with_progress(s);
     const sim::ElasticColumnErrors e = sim::elastic_column_errors(s, run.simulation->world());
     const double floor = std::sqrt(3.0) / (4.0 * n);
     ValidationRow stress = row(name, "sigma_yy relative L2 error", e.syy,
@@ -188,7 +207,7 @@ std::vector<ValidationRow> bui_column_case(const ValidationSuite& suite) {
   for (const double h : sizes) {
     sim::Scenario s = base;
     s.cell_size = h;
-    const Run run = run_quietly(s);
+    const Run run = run_with_progress(s);
     const sim::StageResult& collapse = run.simulation->results().back();
     const ColumnShape shape = column_shape(s, run.simulation->world(), collapse.metrics);
     const std::string name = "Bui column h = " + fmt("%g", h * 1000) + " mm (" +
@@ -225,7 +244,7 @@ std::vector<ValidationRow> paper_slope_energy_case(const ValidationSuite& suite)
     s.cell_size = 1.127;
     s.output.frame_interval = 0;
     s.output.vtk = "none";
-    const Run run = run_quietly(s);
+    const Run run = run_with_progress(s);
     const std::string name = "paper slope phi = " + std::to_string(phi) + " (" +
                              std::to_string(run.simulation->world().points.size()) + " points)";
     rows.push_back(row(name, "runout [m]", run.simulation->results().back().metrics.runout, "-"));
