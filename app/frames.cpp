@@ -224,13 +224,8 @@ render::VideoOptions video_options(double frame_interval) {
 }
 
 bool paints_frames(const sim::Scenario& s) {
-  if (!(s.output.frame_interval > 0)) return false;
-  for (const sim::StageSpec& st : s.stages) {
-    if (st.type == sim::StageType::MaterialChange) continue;
-    if (std::find(s.output.frame_stages.begin(), s.output.frame_stages.end(), st.name) !=
-        s.output.frame_stages.end())
-      return true;
-  }
+  for (const sim::StageSpec& st : s.stages)
+    if (st.type != sim::StageType::MaterialChange && sim::stage_is_painted(s, st)) return true;
   return false;
 }
 

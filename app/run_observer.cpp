@@ -35,11 +35,6 @@ double seconds_since(std::chrono::steady_clock::time_point t) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
 }
 
-bool stage_is_painted(const sim::Scenario& s, const sim::StageSpec& stage) {
-  const auto& names = s.output.frame_stages;
-  return s.output.frame_interval > 0 &&
-         std::find(names.begin(), names.end(), stage.name) != names.end();
-}
 
 }  // namespace
 
@@ -62,7 +57,7 @@ RunObserver::RunObserver(const sim::Scenario& scenario, fs::path out, int thread
       next_checkpoint_(source_.checkpoint_every),
       recorder_(std::move(recorder)) {
   for (const sim::StageSpec& s : scenario.stages)
-    if (s.type != sim::StageType::MaterialChange && stage_is_painted(scenario, s))
+    if (s.type != sim::StageType::MaterialChange && sim::stage_is_painted(scenario, s))
       last_painted_stage_ = s.name;
   if (recorder_) recorder_->start();
 }

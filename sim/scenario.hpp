@@ -3,6 +3,7 @@
 // Angles are stored in radians here; the JSON gives degrees.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <map>
 #include <stdexcept>
@@ -103,6 +104,14 @@ struct Scenario {
   std::vector<StageSpec> stages;
   OutputSpec output;
 };
+
+// True when frames of `stage` are painted: frames are on (frame_interval > 0)
+// and the stage is named in output.frame_stages.
+inline bool stage_is_painted(const Scenario& s, const StageSpec& stage) {
+  const auto& names = s.output.frame_stages;
+  return s.output.frame_interval > 0 &&
+         std::find(names.begin(), names.end(), stage.name) != names.end();
+}
 
 // Bad input. what() reads "FILE: json.path = VALUE: expected ...".
 class ScenarioError : public std::runtime_error {

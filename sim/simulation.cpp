@@ -34,12 +34,6 @@ Simulation::Simulation(const Scenario& scenario)
   gravity_factor_ = ramped ? 0.0 : 1.0;
 }
 
-bool Simulation::paints(const StageSpec& stage) const {
-  const auto& names = scenario_.output.frame_stages;
-  return scenario_.output.frame_interval > 0 &&
-         std::find(names.begin(), names.end(), stage.name) != names.end();
-}
-
 void Simulation::run(Observer& observer) {
   while (stage_index_ < scenario_.stages.size()) {
     const StageSpec& stage = scenario_.stages[stage_index_];
@@ -118,11 +112,11 @@ void Simulation::close_energy_balance(StageResult& r, double kinetic_start,
 // full scan every kWatchdogScanSteps steps checks every point and, if all
 // are within the limits, keeps the state as the last good one.
 void Simulation::watch(const StageSpec& stage, const StepReport& report) {
-  const long steps = progress_.result.steps;
-  if (step_sums_finite(report) && steps % kWatchdogScanSteps != 0) return;
+  const bool finite = step_sums_finite(report);
+  if (finite && progress_.result.steps % kWatchdogScanSteps != 0) return;
   const std::string bad = find_bad_point(world_);
   if (!bad.empty()) stop_run(stage, bad);
-  if (!step_sums_finite(report)) stop_run(stage, "a sum over the points is not finite");
+  if (!finite) stop_run(stage, "a sum over the points is not finite");
   last_good_ = save_state(std::move(last_good_));
   last_good_time_ = time_;
 }
@@ -163,7 +157,7 @@ void Simulation::run_timed_stage(const StageSpec& stage, Observer& observer) {
     begin_timed_stage(stage, observer);
   StageProgress& p = progress_;
   StageResult& r = p.result;
-  const bool painted = paints(stage);
+  const bool painted = stage_is_painted(scenario_, stage);
   const double interval = scenario_.output.frame_interval;
   StepReport report;
   while (true) {

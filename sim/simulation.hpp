@@ -72,7 +72,6 @@ class Simulation {
   double stage_time() const { return stage_time_; }  // since the start of this stage
   const std::vector<StageResult>& results() const { return results_; }
   std::size_t stage_index() const { return stage_index_; }  // the stage running or next
-  bool paints(const StageSpec& stage) const;
 
  private:
   void run_timed_stage(const StageSpec& stage, Observer& observer);

@@ -134,19 +134,15 @@ std::uint64_t stage_prefix_key(const Scenario& s, std::size_t stages) {
       w.put_string(c.property);
       w.put(c.value);
     }
-    const auto& painted = s.output.frame_stages;
-    w.put(std::find(painted.begin(), painted.end(), st.name) != painted.end());
+    w.put(stage_is_painted(s, st));
   }
   return hash_bytes(w.bytes());
 }
 
 std::size_t reusable_stages(const Scenario& s) {
-  const auto& painted = s.output.frame_stages;
   for (std::size_t k = 0; k < s.stages.size(); ++k) {
     const StageSpec& st = s.stages[k];
-    if (s.output.frame_interval > 0 &&
-        std::find(painted.begin(), painted.end(), st.name) != painted.end())
-      return 0;
+    if (stage_is_painted(s, st)) return 0;
     if (st.type == StageType::Gravity) return k + 1;
   }
   return 0;
