@@ -12,7 +12,8 @@
 // divided by the points: what the process really took, allocator and
 // Scenario included.
 //
-// Usage: throughput [STEPS]   (default 300 steps per scene and thread count)
+// Usage: throughput [STEPS [FILTER]]   (default 300 steps per scene and thread
+// count; with FILTER, only the scenes whose label contains it)
 #include <omp.h>
 #include <unistd.h>
 
@@ -80,7 +81,7 @@ double vector_bytes(const sim::World& w, double* grid) {
   for (const auto* v : {&g.mass, &g.px, &g.py, &g.vx, &g.vy, &g.fx, &g.fy, &g.ax, &g.ay})
     nodes += bytes(*v);
   const double scratch = bytes(w.stencils) + bytes(w.bin_key) + bytes(w.order) +
-                         bytes(w.band_start) + bytes(w.bin_count) + bytes(w.chunk_sums) +
+                         bytes(w.band_start) + bytes(w.bin_count) + bytes(w.thread_bands) + bytes(w.band_sums) +
                          bytes(w.material_specs) + bytes(w.materials);
   if (grid) *grid = nodes;
   return points + nodes + scratch;
@@ -168,6 +169,7 @@ int main(int argc, char** argv) {
     std::printf("%.0f\n", own_peak_rss());
     return 0;
   }
+  const std::string filter = argc > 2 ? argv[2] : "";
   std::printf("about %d steps per run at the scene's Courant number, under full gravity, no frames\n",
               steps);
   std::printf("%-32s %8s %10s %14s %14s %16s %10s %10s %10s\n", "scene", "points", "dt [s]",
@@ -175,6 +177,7 @@ int main(int argc, char** argv) {
               "RSS B/pt");
   const double baseline_rss = child_peak_rss(-1);
   for (std::size_t k = 0; k < scenes.size(); ++k) {
+    if (scenes[k].label.find(filter) == std::string::npos) continue;
     std::size_t points = 0;
     double dt = 0, world = 0, grid = 0;
     const double one = run(scenes[k].scenario, 1, steps, points, dt, &world, &grid);

@@ -1,25 +1,40 @@
 // The GIMP step as a list of phases (paper Section 5). Each phase is a free
-// function over the World; only locate_points allocates, and only when the
-// number of points or the touched window grows.
+// function over the World; only locate_points and the step's partial sums
+// allocate, and only when the number of points or the touched window grows.
 #include "sim/step.hpp"
+
+#include <omp.h>
 
 #include <algorithm>
 #include <cmath>
 #include <sstream>
 
+#include "sim/bands.hpp"
+
 namespace sim {
 
+// The whole step is one parallel region: a thread keeps its bands of points
+// and rows of nodes from phase to phase (sim/bands.hpp), and the phases are
+// separated by barriers, not by starting new teams of threads.
 void step(World& w, const StepInput& in, StepReport& report) {
   locate_points(w);
-  reset_grid(w.grid);
-  points_to_grid(w);
-  report = StepReport{};
-  report.wall_loss = enforce_walls_on_momentum(w.grid);
-  report.internal_work = update_stress(w, in.dt);
-  grid_forces(w, in.gravity);
-  update_nodal_momentum(w.grid, in.dt);
-  grid_to_points(w, in, report);
-  report.transfer_loss = report.wall_loss - report.wall_change_on_points;
+  w.band_sums.assign((w.band_start.size() - 1) * kBandSums, 0.0);
+  w.grid.row_sums.assign(static_cast<std::size_t>(w.grid.j_end - w.grid.j_begin), 0.0);
+#pragma omp parallel
+  {
+#pragma omp single
+    partition_bands(w, omp_get_num_threads());
+    reset_grid(w);
+#pragma omp barrier
+    points_to_grid(w);
+    enforce_walls_on_momentum(w);
+#pragma omp barrier
+    update_stress_and_forces(w, in);
+    update_nodal_momentum(w, in.dt);
+#pragma omp barrier
+    grid_to_points(w, in);
+  }
+  report = sum_step_report(w);
 }
 
 namespace {
@@ -65,19 +80,6 @@ void sort_into_bands(World& w) {
   for (int p = 0; p < n; ++p) w.order[w.bin_count[w.bin_key[p]]++] = p;
 }
 
-// Runs add(p) for every point, band by band: even bands in parallel, then odd
-// bands. No two bands running at once touch the same node, and each node
-// receives its contributions in the same order whatever the thread count.
-template <class Add>
-void scatter_by_bands(const World& w, Add add) {
-  const int bands = static_cast<int>(w.band_start.size()) - 1;
-  for (int parity = 0; parity < 2; ++parity) {
-#pragma omp parallel for schedule(dynamic, 1)
-    for (int b = parity; b < bands; b += 2)
-      for (int s = w.band_start[b]; s < w.band_start[b + 1]; ++s) add(w.order[s]);
-  }
-}
-
 }  // namespace
 
 void locate_points(World& w) {
@@ -111,9 +113,11 @@ void locate_points(World& w) {
   sort_into_bands(w);
 }
 
-void reset_grid(Grid& g) {
-#pragma omp parallel for schedule(static)
-  for (int j = g.j_begin; j < g.j_end; ++j) {
+void reset_grid(World& w) {
+  Grid& g = w.grid;
+  int first, last;
+  own_rows(w, first, last);
+  for (int j = first; j < last; ++j) {
     for (int i = g.i_begin; i < g.i_end; ++i) {
       const int k = g.node(i, j);
       g.mass[k] = g.px[k] = g.py[k] = g.fx[k] = g.fy[k] = 0.0;
@@ -125,7 +129,7 @@ void reset_grid(Grid& g) {
 void points_to_grid(World& w) {
   const Particles& pts = w.points;
   Grid& g = w.grid;
-  scatter_by_bands(w, [&](int p) {
+  scatter_own_points(w, [&](int, int p) {
     const Stencil& st = w.stencils[p];
     const double m = pts.mass[p], mvx = m * pts.vx[p], mvy = m * pts.vy[p];
     for (int b = 0; b < 3; ++b) {
@@ -146,11 +150,13 @@ void points_to_grid(World& w) {
 // The velocity a wall takes away is kept (in ax, ay) and handed to the points
 // with the step's acceleration: with the incremental update of Eq. (30) a
 // point would otherwise keep the speed a no-slip wall stopped, and a deposit
-// against a wall would never come to rest.
-double enforce_walls_on_momentum(Grid& g) {
-  g.row_sums.assign(static_cast<std::size_t>(g.j_end - g.j_begin), 0.0);
-#pragma omp parallel for schedule(static)
-  for (int j = g.j_begin; j < g.j_end; ++j) {
+// against a wall would never come to rest. The kinetic energy taken goes to
+// row_sums, row by row.
+void enforce_walls_on_momentum(World& w) {
+  Grid& g = w.grid;
+  int first, last;
+  own_rows(w, first, last);
+  for (int j = first; j < last; ++j) {
     double removed = 0;
     for (int i = g.i_begin; i < g.i_end; ++i) {
       const int k = g.node(i, j);
@@ -165,39 +171,17 @@ double enforce_walls_on_momentum(Grid& g) {
     }
     g.row_sums[j - g.j_begin] = removed;
   }
-  double removed = 0;  // row by row, in a fixed order
-  for (const double row : g.row_sums) removed += row;
-  return removed;
-}
-
-void grid_forces(World& w, const Vec2& gravity) {
-  const Particles& pts = w.points;
-  Grid& g = w.grid;
-  scatter_by_bands(w, [&](int p) {
-    const Stencil& st = w.stencils[p];
-    const double V = pts.mass[p] / pts.density[p];
-    const double sxx = pts.sxx[p], syy = pts.syy[p], sxy = pts.sxy[p];
-    const double mgx = pts.mass[p] * gravity[0], mgy = pts.mass[p] * gravity[1];
-    for (int b = 0; b < 3; ++b) {
-      const int row = g.node(st.base_i, st.base_j + b);
-      for (int a = 0; a < 3; ++a) {
-        const double S = st.wx[a] * st.wy[b];
-        const double gx = st.dx[a] * st.wy[b], gy = st.wx[a] * st.dy[b];  // grad S_ip
-        // f_int = -sigma_p . grad S_ip V_p, Eq. (16); f_ext = m_p b S_ip, Eq. (17).
-        g.fx[row + a] += -V * (sxx * gx + sxy * gy) + S * mgx;
-        g.fy[row + a] += -V * (sxy * gx + syy * gy) + S * mgy;
-      }
-    }
-  });
 }
 
 // Eq. (28): p_i^{k+1} = p_i^k + dt f_i. Walls take the force normal to them.
 // The nodal acceleration handed to the points (Eq. 30) is the whole velocity
 // change of the step: force plus what the wall took away.
-void update_nodal_momentum(Grid& g, double dt) {
+void update_nodal_momentum(World& w, double dt) {
+  Grid& g = w.grid;
   const double inv_dt = 1.0 / dt;
-#pragma omp parallel for schedule(static)
-  for (int j = g.j_begin; j < g.j_end; ++j) {
+  int first, last;
+  own_rows(w, first, last);
+  for (int j = first; j < last; ++j) {
     for (int i = g.i_begin; i < g.i_end; ++i) {
       const int k = g.node(i, j);
       if (g.fix_x[k]) g.fx[k] = 0.0;
@@ -211,6 +195,24 @@ void update_nodal_momentum(Grid& g, double dt) {
       g.vy[k] = g.py[k] * inv;
     }
   }
+}
+
+// The step's sums, band by band (row by row for the walls) in a fixed order.
+StepReport sum_step_report(const World& w) {
+  StepReport r;
+  for (const double row : w.grid.row_sums) r.wall_loss += row;
+  for (std::size_t b = 0; b + 1 < w.band_start.size(); ++b) {
+    const double* sums = &w.band_sums[b * kBandSums];
+    r.internal_work += sums[0];
+    r.gravity_work += sums[1];
+    r.kinetic_energy += sums[2];
+    r.moving_kinetic_energy += sums[3];
+    r.damping_loss += sums[4];
+    r.max_signal = std::max(r.max_signal, sums[5]);
+    r.wall_change_on_points += sums[6];
+  }
+  r.transfer_loss = r.wall_loss - r.wall_change_on_points;
+  return r;
 }
 
 }  // namespace sim

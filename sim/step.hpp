@@ -40,15 +40,20 @@ struct StepReport {
 
 void step(World& world, const StepInput& input, StepReport& report);
 
-// The phases, in the order step() runs them. Public so tests can drive them.
-void locate_points(World& world);          // GIMP stencils, Eqs. (12), (13)
-void reset_grid(Grid& grid);
+// The phases, in the order step() runs them. Public so tests can drive them
+// one by one (outside a parallel region the one thread owns every band).
+void locate_points(World& world);          // GIMP stencils, Eqs. (12), (13); sorts into bands
+void reset_grid(World& world);
 void points_to_grid(World& world);         // nodal mass and momentum, Eqs. (26), (27)
-double enforce_walls_on_momentum(Grid& grid);  // returns the kinetic energy taken
-double update_stress(World& world, double dt);  // Eqs. (31), (24), (21)-(23), (25); returns stress work
-void grid_forces(World& world, const Vec2& gravity);  // Eqs. (16), (17)
-void update_nodal_momentum(Grid& grid, double dt);    // Eq. (28)
-void grid_to_points(World& world, const StepInput& input, StepReport& report);  // Eqs. (29), (30)
+void enforce_walls_on_momentum(World& world);  // kinetic energy taken: grid.row_sums
+// Eqs. (31), (24), (21)-(23), (25), then (16), (17); stress work: band_sums.
+void update_stress_and_forces(World& world, const StepInput& input);
+void update_nodal_momentum(World& world, double dt);  // Eq. (28)
+void grid_to_points(World& world, const StepInput& input);  // Eqs. (29), (30); sums: band_sums
+StepReport sum_step_report(const World& world);  // the sums above, in a fixed order
+
+// The stress update alone, every point in index order: returns the stress work.
+double update_stress(World& world, double dt);
 
 // Largest c_p + |v_p| over the points: the signal speed of the stable step
 // (method notes, section 4).

@@ -34,7 +34,8 @@ struct World {
   std::vector<int> order;         // points sorted by their stencil's base node
   std::vector<int> band_start;    // order[band_start[b] .. band_start[b+1]) is band b
   std::vector<int> bin_count;     // counting-sort workspace
-  std::vector<double> chunk_sums; // per-chunk partial sums of reductions
+  std::vector<int> thread_bands;  // thread t owns bands [thread_bands[t], thread_bands[t+1])
+  std::vector<double> band_sums;  // per band partial sums of the step's reductions
 };
 
 // Rows of base nodes per band. Two bands apart never share a node (a stencil
@@ -44,8 +45,9 @@ constexpr int kBandRows = 4;
 // Largest volume of a point relative to its initial volume (see update_stress).
 constexpr double kMaxExpansion = 2.0;
 
-// Points per chunk of a reduction: sums are taken chunk by chunk in a fixed
-// order, so they do not depend on the number of threads.
-constexpr int kReductionChunk = 2048;
+// Partial sums per band (band_sums): stress work, gravity work, kinetic
+// energy, moving kinetic energy, damping loss, signal speed, wall change.
+// Summed band by band in order, so they do not depend on the number of threads.
+constexpr int kBandSums = 7;
 
 }  // namespace sim

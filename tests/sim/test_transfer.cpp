@@ -26,7 +26,7 @@ TEST(Transfer, PointsToGridKeepsMassAndMomentum) {
     py += w.points.mass[p] * w.points.vy[p];
   }
   sim::locate_points(w);
-  sim::reset_grid(w.grid);
+  sim::reset_grid(w);
   sim::points_to_grid(w);
   double gm = 0, gpx = 0, gpy = 0;
   for (std::size_t k = 0; k < w.grid.mass.size(); ++k) {

@@ -1,0 +1,87 @@
+// Who does what inside the step's one parallel region.
+//
+// The points are sorted into bands of kBandRows base-node rows (see
+// sort_into_bands in step.cpp). Each thread owns a contiguous run of bands,
+// chosen so the threads hold about equal numbers of points, and every phase
+// of the step hands a thread the same points and the same node rows. What a
+// thread writes in one phase it reads in the next from its own cache: with
+// phases that handed points out in other ways (chunks of the point index,
+// bands on demand) the two cores of this machine spent their time passing
+// cache lines back and forth, and 2 threads ran 1.2 to 1.5 times as fast as
+// one instead of 1.8 to 1.9 times (bench/README.md).
+//
+// Results never depend on the partition: a node's sums are taken band by
+// band in a fixed order (even bands, then odd), and every reduction is summed
+// per band and then over the bands in order.
+#pragma once
+
+#include <omp.h>
+
+#include <algorithm>
+
+#include "sim/world.hpp"
+
+namespace sim {
+
+struct BandRange {
+  int begin = 0, end = 0;  // bands [begin, end)
+};
+
+// The bands of the calling thread. Outside a parallel region (tests calling
+// one phase) the one thread owns them all.
+inline BandRange own_bands(const World& w) {
+  const int bands = static_cast<int>(w.band_start.size()) - 1;
+  const int threads = omp_get_num_threads();
+  if (threads == 1) return {0, bands};
+  const int t = omp_get_thread_num();
+  return {w.thread_bands[t], w.thread_bands[t + 1]};
+}
+
+// Splits the bands among `threads` threads, about equal points each.
+inline void partition_bands(World& w, int threads) {
+  const int bands = static_cast<int>(w.band_start.size()) - 1;
+  const long points = w.band_start[bands];
+  w.thread_bands.assign(static_cast<std::size_t>(threads) + 1, bands);
+  w.thread_bands[0] = 0;
+  int b = 0;
+  for (int t = 1; t < threads; ++t) {
+    while (b < bands && static_cast<long>(w.band_start[b]) * threads < points * t) ++b;
+    w.thread_bands[t] = b;
+  }
+}
+
+// The node rows [first, last) the calling thread resets and updates: band b
+// owns rows j_begin + [b, b + 1) kBandRows of the window (the last band the
+// rest of it).
+inline void own_rows(const World& w, int& first, int& last) {
+  const BandRange r = own_bands(w);
+  const Grid& g = w.grid;
+  last = std::min(g.j_begin + r.end * kBandRows, g.j_end);
+  first = std::min(g.j_begin + r.begin * kBandRows, last);
+}
+
+// Runs visit(band, point) for every point of the calling thread's bands,
+// band by band. Reads only: no barrier.
+template <class Visit>
+void for_own_points(const World& w, Visit visit) {
+  const BandRange r = own_bands(w);
+  for (int b = r.begin; b < r.end; ++b)
+    for (int s = w.band_start[b]; s < w.band_start[b + 1]; ++s) visit(b, w.order[s]);
+}
+
+// As for_own_points, for visits that add to grid nodes: even bands first,
+// then (after a barrier) odd bands. Two bands of one parity are a band apart
+// and a stencil spans three node rows, so no two threads add to one node at
+// once, and each node receives its sums in the same order whatever the
+// number of threads. Ends with a barrier.
+template <class Visit>
+void scatter_own_points(const World& w, Visit visit) {
+  const BandRange r = own_bands(w);
+  for (int parity = 0; parity < 2; ++parity) {
+    for (int b = r.begin + ((r.begin & 1) != parity); b < r.end; b += 2)
+      for (int s = w.band_start[b]; s < w.band_start[b + 1]; ++s) visit(b, w.order[s]);
+#pragma omp barrier
+  }
+}
+
+}  // namespace sim
