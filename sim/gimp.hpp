@@ -11,25 +11,54 @@
 
 namespace sim {
 
-// 1D uGIMP weight S(xi) and its derivative dS/dxi, xi = x_p - x_i
-// (method notes, section 1 table). The derivative equals the particle-averaged
-// shape-function gradient of Eq. (13) divided by the particle volume.
-inline void gimp_weight_1d(double xi, double h, double lp, double& S, double& dS) {
+// The grid's cell size h and the points' half-width l_p, with the
+// reciprocals the weights use, so the step multiplies instead of divides.
+struct GimpShape {
+  double h = 0, lp = 0;
+  double inv_h = 0, inv_hlp = 0, inv_2hlp = 0, inv_4hlp = 0;
+  GimpShape() = default;
+  GimpShape(double cell, double half_width)
+      : h(cell),
+        lp(half_width),
+        inv_h(1.0 / cell),
+        inv_hlp(1.0 / (cell * half_width)),
+        inv_2hlp(0.5 / (cell * half_width)),
+        inv_4hlp(0.25 / (cell * half_width)) {}
+};
+
+// The three pieces of the 1D uGIMP weight S(xi) and its derivative dS/dxi,
+// xi = x_p - x_i (method notes, section 1 table). The derivative equals the
+// particle-averaged shape-function gradient of Eq. (13) divided by the
+// particle volume.
+//
+// |xi| <= l_p: the particle's domain straddles the node.
+inline void gimp_near(double xi, const GimpShape& k, double& S, double& dS) {
+  S = 1.0 - (xi * xi + k.lp * k.lp) * k.inv_2hlp;
+  dS = -xi * k.inv_hlp;
+}
+// l_p < |xi| <= h - l_p: the domain lies inside one cell, the linear hat.
+inline void gimp_hat(double xi, const GimpShape& k, double& S, double& dS) {
+  S = 1.0 - std::fabs(xi) * k.inv_h;
+  dS = xi < 0 ? k.inv_h : -k.inv_h;
+}
+// h - l_p < |xi| < h + l_p: the domain straddles the cell's far node.
+inline void gimp_far(double xi, const GimpShape& k, double& S, double& dS) {
+  const double r = std::fmax(k.h + k.lp - std::fabs(xi), 0.0);
+  S = r * r * k.inv_4hlp;
+  dS = xi < 0 ? r * k.inv_2hlp : -r * k.inv_2hlp;
+}
+
+// The 1D weight at any xi: the piece its region calls for.
+inline void gimp_weight_1d(double xi, const GimpShape& k, double& S, double& dS) {
   const double a = std::fabs(xi);
-  const double sign = xi < 0 ? -1.0 : 1.0;
-  if (a <= lp) {  // particle domain straddles the node
-    S = 1.0 - (xi * xi + lp * lp) / (2.0 * h * lp);
-    dS = -xi / (h * lp);
-  } else if (a <= h - lp) {  // domain inside one cell: linear hat
-    S = 1.0 - a / h;
-    dS = -sign / h;
-  } else if (a < h + lp) {  // domain straddles the far node of the cell
-    const double r = h + lp - a;
-    S = r * r / (4.0 * h * lp);
-    dS = -sign * r / (2.0 * h * lp);
+  if (a <= k.lp) {
+    gimp_near(xi, k, S, dS);
+  } else if (a <= k.h - k.lp) {
+    gimp_hat(xi, k, S, dS);
+  } else if (a < k.h + k.lp) {
+    gimp_far(xi, k, S, dS);
   } else {
-    S = 0.0;
-    dS = 0.0;
+    S = dS = 0.0;
   }
 }
 
@@ -42,20 +71,41 @@ struct Stencil {
 
 // First node index (per axis) that can carry a non-zero weight: nodes with
 // x_i > x_p - h - l_p, i.e. floor((x_p - l_p - origin) / h).
-inline int gimp_base_node(double xp, double origin, double h, double lp) {
-  return static_cast<int>(std::floor((xp - lp - origin) / h));
+inline int gimp_base_node(double xp, double origin, const GimpShape& k) {
+  return static_cast<int>(std::floor((xp - k.lp - origin) * k.inv_h));
 }
 
-// Fills the stencil of a particle at (xp, yp) on a grid with the given origin
-// and cell size h.
-inline void gimp_stencil(double xp, double yp, double origin_x, double origin_y, double h,
-                         double lp, Stencil& st) {
-  st.base_i = gimp_base_node(xp, origin_x, h, lp);
-  st.base_j = gimp_base_node(yp, origin_y, h, lp);
-  for (int a = 0; a < 3; ++a) {
-    gimp_weight_1d(xp - (origin_x + (st.base_i + a) * h), h, lp, st.wx[a], st.dx[a]);
-    gimp_weight_1d(yp - (origin_y + (st.base_j + a) * h), h, lp, st.wy[a], st.dy[a]);
-  }
+// One axis of a stencil. From the base node, xi lies in [l_p, h + l_p) for
+// node 0, [l_p - h, l_p) for node 1 and [l_p - 2h, l_p - h) for node 2, so
+// each node has two candidate pieces; both are computed and one is kept,
+// without a branch the processor could mispredict.
+inline void gimp_axis(double xp, double origin, const GimpShape& k, int& base, double w[3],
+                      double d[3]) {
+  base = gimp_base_node(xp, origin, k);
+  const double x0 = xp - (origin + base * k.h);
+  const double x1 = xp - (origin + (base + 1) * k.h);
+  const double x2 = xp - (origin + (base + 2) * k.h);
+  double s_hat, d_hat, s_far, d_far, s_near, d_near;
+  gimp_hat(x0, k, s_hat, d_hat);
+  gimp_far(x0, k, s_far, d_far);
+  const bool hat0 = x0 <= k.h - k.lp;
+  w[0] = hat0 ? s_hat : s_far;
+  d[0] = hat0 ? d_hat : d_far;
+  gimp_near(x1, k, s_near, d_near);
+  gimp_hat(x1, k, s_hat, d_hat);
+  const bool near1 = x1 >= -k.lp;
+  w[1] = near1 ? s_near : s_hat;
+  d[1] = near1 ? d_near : d_hat;
+  gimp_far(x2, k, s_far, d_far);  // zero beyond h + l_p
+  w[2] = s_far;
+  d[2] = d_far;
+}
+
+// Fills the stencil of a particle at (xp, yp) on a grid with the given origin.
+inline void gimp_stencil(double xp, double yp, double origin_x, double origin_y,
+                         const GimpShape& k, Stencil& st) {
+  gimp_axis(xp, origin_x, k, st.base_i, st.wx, st.dx);
+  gimp_axis(yp, origin_y, k, st.base_j, st.wy, st.dy);
 }
 
 }  // namespace sim

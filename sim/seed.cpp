@@ -17,7 +17,7 @@ World make_world(const Scenario& s) {
   // corner; a centre belongs to the first body that contains it, so the
   // characteristic functions stay a partition of unity (Eq. 6).
   const double spacing = s.cell_size / s.points_per_cell;
-  w.half_width = 0.5 * spacing;
+  w.gimp = GimpShape(w.grid.h, 0.5 * spacing);
   const long cols = std::lround(std::ceil((s.domain_max[0] - s.domain_min[0]) / spacing));
   const long rows = std::lround(std::ceil((s.domain_max[1] - s.domain_min[1]) / spacing));
   const double volume = spacing * spacing;  // per unit thickness (plane strain)

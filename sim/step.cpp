@@ -92,7 +92,7 @@ void locate_points(World& w) {
 #pragma omp parallel for schedule(static) reduction(min : bad, i_lo, j_lo) reduction(max : i_hi, j_hi)
   for (int p = 0; p < n; ++p) {
     Stencil& st = w.stencils[p];
-    gimp_stencil(pts.x[p], pts.y[p], g.origin_x, g.origin_y, g.h, w.half_width, st);
+    gimp_stencil(pts.x[p], pts.y[p], g.origin_x, g.origin_y, w.gimp, st);
     const bool inside = std::isfinite(pts.x[p]) && std::isfinite(pts.y[p]) && st.base_i >= 0 &&
                         st.base_j >= 0 && st.base_i + 2 < g.nx && st.base_j + 2 < g.ny;
     if (!inside) {

@@ -24,7 +24,7 @@ class SimulationError : public std::runtime_error {
 struct World {
   Particles points;
   Grid grid;
-  double half_width = 0;  // l_p of every point (uGIMP keeps the initial size)
+  GimpShape gimp;  // cell size and the l_p of every point (uGIMP keeps the initial size)
   std::vector<MaterialSpec> material_specs;  // as they stand now (material changes edit them)
   std::vector<MaterialConstants> materials;
 

@@ -2,6 +2,7 @@
 // gradients that sum to zero, and a gradient that is the weight's derivative.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 
 #include "sim/gimp.hpp"
@@ -17,7 +18,7 @@ TEST(GimpWeights, SumToOneAndGradientsToZeroAtRandomPositions) {
     std::uniform_real_distribution<double> pos(2.0, 8.0);
     for (int k = 0; k < 20000; ++k) {
       sim::Stencil st;
-      sim::gimp_stencil(pos(rng), pos(rng), -1.0, -1.0, kH, lp, st);
+      sim::gimp_stencil(pos(rng), pos(rng), -1.0, -1.0, sim::GimpShape(kH, lp), st);
       double sum = 0, gx = 0, gy = 0;
       for (int b = 0; b < 3; ++b)
         for (int a = 0; a < 3; ++a) {
@@ -34,13 +35,13 @@ TEST(GimpWeights, SumToOneAndGradientsToZeroAtRandomPositions) {
 }
 
 TEST(GimpWeights, DerivativeMatchesFiniteDifferenceAndWeightIsContinuous) {
-  const double lp = kH / 4;
+  const sim::GimpShape k(kH, kH / 4);
   for (double xi = -1.3 * kH; xi <= 1.3 * kH; xi += 0.0137 * kH) {
     double s, ds, sp, dsp, sm, dsm;
-    sim::gimp_weight_1d(xi, kH, lp, s, ds);
+    sim::gimp_weight_1d(xi, k, s, ds);
     const double e = 1e-7;
-    sim::gimp_weight_1d(xi + e, kH, lp, sp, dsp);
-    sim::gimp_weight_1d(xi - e, kH, lp, sm, dsm);
+    sim::gimp_weight_1d(xi + e, k, sp, dsp);
+    sim::gimp_weight_1d(xi - e, k, sm, dsm);
     EXPECT_NEAR((sp - sm) / (2 * e), ds, 1e-5) << "xi = " << xi;
     EXPECT_NEAR(sp, sm, 1e-6) << "weight jumps at xi = " << xi;
   }
@@ -55,7 +56,7 @@ TEST(GimpWeights, ReproducesLinearFields) {
   for (int k = 0; k < 1000; ++k) {
     const double xp = pos(rng), yp = pos(rng);
     sim::Stencil st;
-    sim::gimp_stencil(xp, yp, ox, oy, kH, lp, st);
+    sim::gimp_stencil(xp, yp, ox, oy, sim::GimpShape(kH, lp), st);
     double x = 0, y = 0, dxdx = 0, dydy = 0;
     for (int b = 0; b < 3; ++b)
       for (int a = 0; a < 3; ++a) {
@@ -69,6 +70,33 @@ TEST(GimpWeights, ReproducesLinearFields) {
     EXPECT_NEAR(y, yp, 1e-12);
     EXPECT_NEAR(dxdx, 1.0, 1e-12);
     EXPECT_NEAR(dydy, 1.0, 1e-12);
+  }
+}
+
+TEST(GimpWeights, StencilMatchesTheWeightAtEveryNode) {
+  // The stencil picks each node's piece of the weight without branching; it
+  // must give what the region test of gimp_weight_1d gives, at every node,
+  // including positions on the region edges.
+  std::mt19937_64 rng(5);
+  for (const int ppc : {1, 2, 3, 4}) {
+    const sim::GimpShape k(kH, kH / (2.0 * ppc));
+    std::uniform_real_distribution<double> pos(0.0, 4.0);
+    for (int n = 0; n < 20000; ++n) {
+      // Every fourth position sits on a node or a region edge.
+      double xp = pos(rng);
+      if (n % 4 == 0) xp = std::round(xp / k.lp) * k.lp;
+      sim::Stencil st;
+      sim::gimp_stencil(xp, xp, -1.0, -1.0, k, st);
+      for (int a = 0; a < 3; ++a) {
+        double s, ds;
+        sim::gimp_weight_1d(xp - (-1.0 + (st.base_i + a) * kH), k, s, ds);
+        ASSERT_NEAR(st.wx[a], s, 1e-14) << "ppc " << ppc << ", x = " << xp << ", node " << a;
+        ASSERT_NEAR(st.dx[a], ds, 1e-12) << "ppc " << ppc << ", x = " << xp << ", node " << a;
+      }
+      double beyond, d_beyond;  // the node past the stencil carries nothing
+      sim::gimp_weight_1d(xp - (-1.0 + (st.base_i + 3) * kH), k, beyond, d_beyond);
+      ASSERT_EQ(beyond, 0.0) << "x = " << xp;
+    }
   }
 }
 
