@@ -7,6 +7,7 @@
 // three nodes per axis, so one particle's weights fit a fixed 3x3 stencil.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 
 namespace sim {
@@ -39,13 +40,13 @@ inline void gimp_near(double xi, const GimpShape& k, double& S, double& dS) {
 // l_p < |xi| <= h - l_p: the domain lies inside one cell, the linear hat.
 inline void gimp_hat(double xi, const GimpShape& k, double& S, double& dS) {
   S = 1.0 - std::fabs(xi) * k.inv_h;
-  dS = xi < 0 ? k.inv_h : -k.inv_h;
+  dS = -std::copysign(k.inv_h, xi);
 }
 // h - l_p < |xi| < h + l_p: the domain straddles the cell's far node.
 inline void gimp_far(double xi, const GimpShape& k, double& S, double& dS) {
-  const double r = std::fmax(k.h + k.lp - std::fabs(xi), 0.0);
+  const double r = std::max(k.h + k.lp - std::fabs(xi), 0.0);  // zero beyond h + l_p
   S = r * r * k.inv_4hlp;
-  dS = xi < 0 ? r * k.inv_2hlp : -r * k.inv_2hlp;
+  dS = -std::copysign(r * k.inv_2hlp, xi);
 }
 
 // The 1D weight at any xi: the piece its region calls for.
@@ -77,8 +78,8 @@ inline int gimp_base_node(double xp, double origin, const GimpShape& k) {
 
 // One axis of a stencil. From the base node, xi lies in [l_p, h + l_p) for
 // node 0, [l_p - h, l_p) for node 1 and [l_p - 2h, l_p - h) for node 2, so
-// each node has two candidate pieces; both are computed and one is kept,
-// without a branch the processor could mispredict.
+// each node has two candidate pieces. (Computing both and masking one out
+// was slower: with points sorted, the branches are predictable.)
 inline void gimp_axis(double xp, double origin, const GimpShape& k, int& base, double w[3],
                       double d[3]) {
   base = gimp_base_node(xp, origin, k);
