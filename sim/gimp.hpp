@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 namespace sim {
 
@@ -63,11 +64,29 @@ inline void gimp_weight_1d(double xi, const GimpShape& k, double& S, double& dS)
   }
 }
 
+// Four doubles that the compiler keeps in one vector register (a g++
+// extension; AVX where the build has it, two SSE halves where not). Each lane
+// is computed with plain IEEE arithmetic, so the results do not depend on the
+// vector width.
+typedef double Lane4 __attribute__((vector_size(32)));
+
+inline Lane4 load4(const double* p) {
+  Lane4 v;
+  std::memcpy(&v, p, sizeof v);
+  return v;
+}
+inline void store4(double* p, const Lane4& v) { std::memcpy(p, &v, sizeof v); }
+// Lanes 0..2: a stencil row's three nodes; lane 3 is never part of a result.
+inline double sum3(const Lane4& v) { return (v[0] + v[1]) + v[2]; }
+
 // One particle's 3x3 stencil: nodes (base_i + a, base_j + b), a, b in 0..2.
+// The x weights fill lanes 0..2 of a Lane4 (lane 3 is 0), so a stencil row
+// is one vector operation on three neighbouring nodes of a grid row (the grid
+// keeps a spare node at the end of every row for lane 3, see grid.hpp).
 struct Stencil {
+  Lane4 wx, dx;         // 1D weights and derivatives along x
+  double wy[3], dy[3];  // along y
   int base_i = 0, base_j = 0;
-  double wx[3], wy[3];  // 1D weights per axis
-  double dx[3], dy[3];  // 1D weight derivatives per axis
 };
 
 // First node index (per axis) that can carry a non-zero weight: nodes with
@@ -105,7 +124,10 @@ inline void gimp_axis(double xp, double origin, const GimpShape& k, int& base, d
 // Fills the stencil of a particle at (xp, yp) on a grid with the given origin.
 inline void gimp_stencil(double xp, double yp, double origin_x, double origin_y,
                          const GimpShape& k, Stencil& st) {
-  gimp_axis(xp, origin_x, k, st.base_i, st.wx, st.dx);
+  double w[3], d[3];
+  gimp_axis(xp, origin_x, k, st.base_i, w, d);
+  st.wx = Lane4{w[0], w[1], w[2], 0.0};
+  st.dx = Lane4{d[0], d[1], d[2], 0.0};
   gimp_axis(yp, origin_y, k, st.base_j, st.wy, st.dy);
 }
 

@@ -31,7 +31,8 @@ Grid make_grid(const Scenario& s) {
   g.origin_y = s.domain_min[1] - pad * g.h;
   g.nx = cells_x + 2 * pad + 1;
   g.ny = cells_y + 2 * pad + 1;
-  const std::size_t n = static_cast<std::size_t>(g.nx) * g.ny;
+  g.stride = g.nx + 1;
+  const std::size_t n = static_cast<std::size_t>(g.stride) * g.ny;
   for (auto* v : {&g.mass, &g.px, &g.py, &g.vx, &g.vy, &g.fx, &g.fy, &g.ax, &g.ay}) v->assign(n, 0.0);
   g.points.assign(n, 0);
   g.fix_x.assign(n, 0);

@@ -16,7 +16,7 @@ struct Grid {
   double h = 0;                       // cell size
   int nx = 0, ny = 0;                 // nodes per axis
 
-  // Per node, indexed j * nx + i: mass and momentum (Eqs. 26, 27), velocity
+  // Per node, indexed j * stride + i: mass and momentum (Eqs. 26, 27), velocity
   // p/m, force (Eqs. 16, 17) and acceleration f/m.
   std::vector<double> mass, px, py, vx, vy, fx, fy, ax, ay;
   // Points whose weight on the node is positive: a point alone on all its
@@ -31,7 +31,13 @@ struct Grid {
 
   std::vector<double> row_sums;  // per-row partial sums, added in a fixed order
 
-  int node(int i, int j) const { return j * nx + i; }
+  // Nodes per row in memory: nx and one spare node that no point weights.
+  // A stencil row is read and written as four nodes (Lane4, gimp.hpp); the
+  // fourth, past the stencil, is at worst this spare node of the same row,
+  // so it never belongs to a row another thread is writing.
+  int stride = 0;
+
+  int node(int i, int j) const { return j * stride + i; }
 };
 
 // Builds the grid for a scenario: walls on the domain lines (the right and top

@@ -18,25 +18,26 @@ double update_point_stress(World& w, int p, double dt) {
   Particles& pts = w.points;
   const Grid& g = w.grid;
   const Stencil& st = w.stencils[p];
-  // Velocity gradient L_ab = sum_i v_ia dS_ip/dx_b.
-  double lxx = 0, lxy = 0, lyx = 0, lyy = 0;
+  // Velocity gradient L_ab = sum_i v_ia dS_ip/dx_b, a stencil row at a time.
+  Lane4 lxx{}, lxy{}, lyx{}, lyy{};
   bool alone = true;
   for (int b = 0; b < 3; ++b) {
     const int row = g.node(st.base_i, st.base_j + b);
-    for (int a = 0; a < 3; ++a) {
-      alone = alone && (st.wx[a] * st.wy[b] == 0.0 || g.points[row + a] == 1);
-      const double gx = st.dx[a] * st.wy[b], gy = st.wx[a] * st.dy[b];
-      lxx += g.vx[row + a] * gx;
-      lxy += g.vx[row + a] * gy;
-      lyx += g.vy[row + a] * gx;
-      lyy += g.vy[row + a] * gy;
-    }
+    const Lane4 S = st.wx * st.wy[b];
+    for (int a = 0; a < 3; ++a) alone &= (S[a] == 0.0) | (g.points[row + a] == 1);
+    const Lane4 gx = st.dx * st.wy[b], gy = st.wx * st.dy[b];
+    const Lane4 vx = load4(&g.vx[row]), vy = load4(&g.vy[row]);
+    lxx += vx * gx;
+    lxy += vx * gy;
+    lyx += vy * gx;
+    lyy += vy * gy;
   }
-  const StrainIncrement de{dt * lxx, dt * lyy, 0.5 * dt * (lxy + lyx)};  // Eq. (31)
+  const double Lxx = sum3(lxx), Lxy = sum3(lxy), Lyx = sum3(lyx), Lyy = sum3(lyy);
+  const StrainIncrement de{dt * Lxx, dt * Lyy, 0.5 * dt * (Lxy + Lyx)};  // Eq. (31)
   const MaterialConstants& mat = w.materials[pts.material[p]];
   const Stress old{pts.sxx[p], pts.syy[p], pts.sxy[p], pts.szz[p]};
   Stress s = old;
-  jaumann_rotate(s, 0.5 * dt * (lxy - lyx));  // Eq. (24)
+  jaumann_rotate(s, 0.5 * dt * (Lxy - Lyx));  // Eq. (24)
   elastic_predictor(s, de, mat);              // Eq. (21)
   if (mat.plastic)                            // Eqs. (20)-(23)
     pts.yielded[p] = mohr_coulomb_return(mat.mohr_coulomb, s) != ReturnRegion::Elastic;
@@ -75,13 +76,11 @@ void scatter_point_force(World& w, int p, const Vec2& gravity) {
   const double mgx = pts.mass[p] * gravity[0], mgy = pts.mass[p] * gravity[1];
   for (int b = 0; b < 3; ++b) {
     const int row = g.node(st.base_i, st.base_j + b);
-    for (int a = 0; a < 3; ++a) {
-      const double S = st.wx[a] * st.wy[b];
-      const double gx = st.dx[a] * st.wy[b], gy = st.wx[a] * st.dy[b];  // grad S_ip
-      // f_int = -sigma_p . grad S_ip V_p, Eq. (16); f_ext = m_p b S_ip, Eq. (17).
-      g.fx[row + a] += -V * (sxx * gx + sxy * gy) + S * mgx;
-      g.fy[row + a] += -V * (sxy * gx + syy * gy) + S * mgy;
-    }
+    const Lane4 S = st.wx * st.wy[b];
+    const Lane4 gx = st.dx * st.wy[b], gy = st.wx * st.dy[b];  // grad S_ip
+    // f_int = -sigma_p . grad S_ip V_p, Eq. (16); f_ext = m_p b S_ip, Eq. (17).
+    store4(&g.fx[row], load4(&g.fx[row]) + (-V * (sxx * gx + sxy * gy) + S * mgx));
+    store4(&g.fy[row], load4(&g.fy[row]) + (-V * (sxy * gx + syy * gy) + S * mgy));
   }
 }
 
@@ -110,21 +109,24 @@ void grid_to_points(World& w, const StepInput& in) {
   const double keep = 1.0 / (1.0 + in.damping);  // v := v / (1 + theta)
   for_own_points(w, [&](int band, int p) {
     const Stencil& st = w.stencils[p];
-    double ax = 0, ay = 0, vx = 0, vy = 0, wx = 0, wy = 0;
+    Lane4 sax{}, say{}, svx{}, svy{}, swx{}, swy{};
     for (int b = 0; b < 3; ++b) {
       const int row = g.node(st.base_i, st.base_j + b);
-      for (int a = 0; a < 3; ++a) {
-        const double S = st.wx[a] * st.wy[b];
-        ax += S * g.ax[row + a];
-        ay += S * g.ay[row + a];
-        // A held component's acceleration is all the wall's (its force is
-        // zero). Masked by a multiply, not a branch: the same sums, faster.
-        wx += S * g.fix_x[row + a] * g.ax[row + a];
-        wy += S * g.fix_y[row + a] * g.ay[row + a];
-        vx += S * g.vx[row + a];
-        vy += S * g.vy[row + a];
-      }
+      const Lane4 S = st.wx * st.wy[b];
+      const Lane4 nax = load4(&g.ax[row]), nay = load4(&g.ay[row]);
+      sax += S * nax;
+      say += S * nay;
+      // A held component's acceleration is all the wall's (its force is
+      // zero). Masked by a multiply, not a branch.
+      const Lane4 held_x{double(g.fix_x[row]), double(g.fix_x[row + 1]), double(g.fix_x[row + 2]), 0};
+      const Lane4 held_y{double(g.fix_y[row]), double(g.fix_y[row + 1]), double(g.fix_y[row + 2]), 0};
+      swx += S * held_x * nax;
+      swy += S * held_y * nay;
+      svx += S * load4(&g.vx[row]);
+      svy += S * load4(&g.vy[row]);
     }
+    const double ax = sum3(sax), ay = sum3(say), vx = sum3(svx), vy = sum3(svy);
+    const double wx = sum3(swx), wy = sum3(swy);
     const double dx = in.dt * vx, dy = in.dt * vy;  // Eq. (29)
     pts.x[p] += dx;
     pts.y[p] += dy;

@@ -134,13 +134,11 @@ void points_to_grid(World& w) {
     const double m = pts.mass[p], mvx = m * pts.vx[p], mvy = m * pts.vy[p];
     for (int b = 0; b < 3; ++b) {
       const int row = g.node(st.base_i, st.base_j + b);
-      for (int a = 0; a < 3; ++a) {
-        const double S = st.wx[a] * st.wy[b];  // S_ip, Eq. (12)
-        g.mass[row + a] += S * m;              // Eq. (26)
-        g.px[row + a] += S * mvx;              // Eq. (27)
-        g.py[row + a] += S * mvy;
-        g.points[row + a] += S > 0.0;
-      }
+      const Lane4 S = st.wx * st.wy[b];                          // S_ip, Eq. (12)
+      store4(&g.mass[row], load4(&g.mass[row]) + S * m);         // Eq. (26)
+      store4(&g.px[row], load4(&g.px[row]) + S * mvx);           // Eq. (27)
+      store4(&g.py[row], load4(&g.py[row]) + S * mvy);
+      for (int a = 0; a < 3; ++a) g.points[row + a] += S[a] > 0.0;
     }
   });
 }
