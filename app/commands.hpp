@@ -77,6 +77,7 @@ int gallery_command(const GalleryOptions& options);
 struct ValidateOptions {
   std::string scenarios;  // "" : ./scenarios
   bool quick = false;     // coarse resolutions only (the CI version)
+  bool finest = false;    // adds the Bui column at h = 1.25 mm
 };
 int validate_command(const ValidateOptions& options);
 

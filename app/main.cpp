@@ -84,6 +84,8 @@ int main(int argc, char** argv) {
       cli.add_subcommand("validate", "Run the validation suite and print its table");
   validate_cmd->add_option("--scenarios", validate.scenarios, "Scenario folder (default: scenarios)");
   validate_cmd->add_flag("--quick", validate.quick, "Coarse resolutions only (the CI version)");
+  validate_cmd->add_flag("--finest", validate.finest,
+                         "Also the Bui column at h = 1.25 mm (minutes on one thread; not with --quick)");
 
   try {
     cli.parse(argc, argv);

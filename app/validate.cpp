@@ -1,7 +1,7 @@
 // `landslide validate`: runs the validation suite (app/validation_cases.cpp)
 // and prints one table: case, measure, value, reference, error, tolerance,
 // wall time. Exit status 0 when every check passes, 1 when one fails, 2 when
-// a scenario of the suite cannot be read.
+// a scenario or experiment data file of the suite cannot be read.
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -59,6 +59,7 @@ int validate_command(const ValidateOptions& options) {
   ValidationSuite suite;
   suite.scenarios = options.scenarios.empty() ? "scenarios" : options.scenarios;
   suite.quick = options.quick;
+  suite.finest = options.finest;
   const auto start = std::chrono::steady_clock::now();
   std::vector<ValidationRow> rows;
   try {

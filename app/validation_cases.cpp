@@ -1,34 +1,30 @@
 // The cases of `landslide validate` (tests/validation/README.md): the confined
-// elastic column against its closed form at several resolutions, the
-// aluminium-rod column of Bui et al. (2008), and the energy balance of the
-// paper's Eq. (3) in every run.
+// elastic column against its closed form at several resolutions and the
+// energy balance of the paper's Eq. (3) in every run (the Bui et al. (2008)
+// column is in app/validation_bui.cpp), and the helpers they share
+// (app/validation_util.hpp).
 #include "app/validation_cases.hpp"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <limits>
 #include <memory>
 
-#include "sim/elastic_column.hpp"
 #include "app/progress.hpp"
+#include "app/validation_util.hpp"
+#include "sim/elastic_column.hpp"
 #include "sim/simulation.hpp"
 
 namespace app {
-
-namespace {
-
-struct Run {
-  std::unique_ptr<sim::Simulation> simulation;
-  double wall = 0;
-};
 
 std::string fmt(const char* format, double v) {
   char text[64];
   std::snprintf(text, sizeof text, format, v);
   return text;
 }
+
+namespace {
 
 // Progress of one validation run on stderr (the table goes to stdout at the
 // end): the full suite runs for minutes.
@@ -47,6 +43,8 @@ class RunProgress : public sim::Observer {
  private:
   Progress bar_;
 };
+
+}  // namespace
 
 Run run_with_progress(const sim::Scenario& s) {
   Run r;
@@ -69,7 +67,7 @@ ValidationRow row(const std::string& case_name, const std::string& measure, doub
 }
 
 ValidationRow compared(const std::string& case_name, const std::string& measure, double value,
-                       double reference, double tolerance, const char* format = "%.4g") {
+                       double reference, double tolerance, const char* format) {
   ValidationRow r = row(case_name, measure, value, fmt(format, reference));
   r.error = (value - reference) / std::fabs(reference);
   r.has_error = true;
@@ -77,10 +75,7 @@ ValidationRow compared(const std::string& case_name, const std::string& measure,
   return r;
 }
 
-// The energy balance error of Eq. (3) of each gravity and dynamic stage of the
-// run, checked against kEnergyTolerance, and the stage's transfer loss
-// (StepReport::transfer_loss) as a share of its external work, reported. The
-// first row carries the run's wall time.
+// The transfer loss is StepReport::transfer_loss.
 std::vector<ValidationRow> energy_rows(const std::string& case_name, const Run& run) {
   std::vector<ValidationRow> rows;
   for (const sim::StageResult& s : run.simulation->results()) {
@@ -97,6 +92,8 @@ std::vector<ValidationRow> energy_rows(const std::string& case_name, const Run& 
   }
   return rows;
 }
+
+namespace {
 
 std::string cells_label(const std::string& base, int cells) {
   return base + " (" + std::to_string(cells) + " cells)";
@@ -145,91 +142,6 @@ std::vector<ValidationRow> elastic_column_case(const ValidationSuite& suite) {
   rows.push_back(order);
   rows.push_back(row(range, "observed order of settlement error",
                      sim::observed_order(h.data(), settlement.data(), h.size()), "-"));
-  return rows;
-}
-
-namespace {
-
-// The shape of the collapsed column, from the points at rest.
-struct ColumnShape {
-  double front = 0;          // x of the toe of the main body, plus half a point spacing, m
-  double wall_height = 0;    // top of the points within one cell of the wall, plus half a spacing, m
-  double failure_angle = 0;  // degrees from horizontal of the line between moved and unmoved points
-};
-
-// The failure surface in the initial configuration: in each initial row of
-// points between 10 % and 90 % of the height, the leftmost point that moved
-// more than `moved` (5 % of the height) marks it; a least-squares line
-// x = a + b y through the marks gives the angle atan(1 / |b|).
-ColumnShape column_shape(const sim::Scenario& s, const sim::World& w, const sim::StageMetrics& m) {
-  const sim::Particles& p = w.points;
-  const double spacing = s.cell_size / s.points_per_cell;
-  double height = 0;
-  for (std::size_t i = 0; i < p.size(); ++i) height = std::max(height, p.y0[i] + 0.5 * spacing);
-  ColumnShape shape;
-  shape.front = m.front + 0.5 * spacing;
-  const int rows = static_cast<int>(std::lround(height / spacing));
-  std::vector<double> mark(rows, std::numeric_limits<double>::infinity());
-  const double moved = 0.05 * height;
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    if (p.x[i] < s.cell_size) shape.wall_height = std::max(shape.wall_height, p.y[i] + 0.5 * spacing);
-    const int r = std::clamp(static_cast<int>(p.y0[i] / spacing), 0, rows - 1);
-    if (std::hypot(p.x[i] - p.x0[i], p.y[i] - p.y0[i]) > moved) mark[r] = std::min(mark[r], p.x0[i]);
-  }
-  double n = 0, sy = 0, sx = 0, syy = 0, sxy = 0;
-  for (int r = 0; r < rows; ++r) {
-    const double y = (r + 0.5) * spacing;
-    if (!std::isfinite(mark[r]) || y < 0.1 * height || y > 0.9 * height) continue;
-    n += 1, sy += y, sx += mark[r], syy += y * y, sxy += y * mark[r];
-  }
-  const double b = n >= 3 ? (n * sxy - sy * sx) / (n * syy - sy * sy) : 0.0;
-  shape.failure_angle = n >= 3 ? std::atan2(1.0, std::fabs(b)) * 180.0 / M_PI : std::nan("");
-  return shape;
-}
-
-}  // namespace
-
-// The aluminium-rod column of Bui et al. (2008) at several resolutions
-// (scenarios/validation/bui2008-column.json, cell size overridden). No
-// citable value of the experiment's runout or free surface was found
-// (tests/validation/README.md), so the runout is compared with the finest
-// run (discretisation error), the height at the wall with the initial
-// height (Coulomb's active wedge, at 45 + phi/2 through the toe, meets the top
-// 0.07 m from the toe and leaves the column at the wall standing), and the
-// failure surface with that angle.
-std::vector<ValidationRow> bui_column_case(const ValidationSuite& suite) {
-  const sim::Scenario base = sim::load_scenario(suite.scenarios + "/validation/bui2008-column.json");
-  const std::vector<double> sizes = suite.quick ? std::vector<double>{0.01}
-                                                : std::vector<double>{0.01, 0.005, 0.0025};
-  const double phi = 19.8, H = 0.1;
-  std::vector<ValidationRow> rows;
-  std::vector<double> runouts;
-  for (const double h : sizes) {
-    sim::Scenario s = base;
-    s.cell_size = h;
-    const Run run = run_with_progress(s);
-    const sim::StageResult& collapse = run.simulation->results().back();
-    const ColumnShape shape = column_shape(s, run.simulation->world(), collapse.metrics);
-    const std::string name = "Bui column h = " + fmt("%g", h * 1000) + " mm (" +
-                             std::to_string(run.simulation->world().points.size()) + " points)";
-    rows.push_back(row(name, "runout beyond the initial toe [m]", collapse.metrics.runout,
-                       "experiment: none citable"));
-    runouts.push_back(collapse.metrics.runout);
-    rows.push_back(row(name, "toe position [m]", shape.front, "experiment: none citable"));
-    rows.push_back(compared(name, "height at the wall [m]", shape.wall_height, H, 0.05));
-    ValidationRow angle = compared(name, "failure surface angle [deg]", shape.failure_angle,
-                                   45 + phi / 2, -1, "%.1f (Coulomb)");
-    rows.push_back(angle);
-    rows.push_back(row(name, "deposit slope [deg]", collapse.metrics.deposit_slope_deg, "-"));
-    ValidationRow rest = row(name, "collapse ended at rest (1 = yes)", collapse.ended_at_rest, "1");
-    rest.at_least = true;
-    rest.tolerance = 0.5;
-    rows.push_back(rest);
-    for (const ValidationRow& r : energy_rows(name, run)) rows.push_back(r);
-  }
-  for (std::size_t k = 0; k + 1 < runouts.size(); ++k)
-    rows.push_back(compared("Bui column h = " + fmt("%g", sizes[k] * 1000) + " mm",
-                            "runout vs the finest run", runouts[k], runouts.back(), -1, "%.4f m"));
   return rows;
 }
 

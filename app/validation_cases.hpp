@@ -34,6 +34,7 @@ struct ValidationRow {
 struct ValidationSuite {
   std::string scenarios;  // folder holding validation/ and paper-slope-*.json
   bool quick = false;     // coarse resolutions only, for CI
+  bool finest = false;    // adds the Bui column at h = 1.25 mm (minutes on one thread)
 };
 
 // Largest energy balance error (Eq. 3) of a run's timed stages that a row may show.
