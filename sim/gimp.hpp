@@ -7,8 +7,8 @@
 // three nodes per axis, so one particle's weights fit a fixed 3x3 stencil.
 #pragma once
 
-#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 
 namespace sim {
@@ -28,26 +28,50 @@ struct GimpShape {
         inv_4hlp(0.25 / (cell * half_width)) {}
 };
 
+// Eight doubles, and eight matching integers, in vector registers (g++
+// vector extensions): the stencils of eight points are computed at once. The
+// weights below are templates on the value type, double or Lane8, written
+// with selects (?:) only, so one text gives both and each lane of a Lane8 is
+// bit for bit what the double version gives.
+typedef double Lane8 __attribute__((vector_size(64)));
+typedef std::int64_t Int8 __attribute__((vector_size(64)));
+
+inline double abs_of(double x) { return x < 0 ? -x : x; }
+inline Lane8 abs_of(const Lane8& x) { return x < 0 ? -x : x; }
+inline int floor_to_int(double t) { return static_cast<int>(std::floor(t)); }
+inline Int8 floor_to_int(const Lane8& t) {
+  const Int8 i = __builtin_convertvector(t, Int8);  // rounds toward zero
+  return i + (__builtin_convertvector(i, Lane8) > t);  // minus 1 where that rounded up
+}
+inline double to_real(int i) { return i; }
+inline Lane8 to_real(const Int8& i) { return __builtin_convertvector(i, Lane8); }
+
 // The three pieces of the 1D uGIMP weight S(xi) and its derivative dS/dxi,
 // xi = x_p - x_i (method notes, section 1 table). The derivative equals the
 // particle-averaged shape-function gradient of Eq. (13) divided by the
 // particle volume.
 //
 // |xi| <= l_p: the particle's domain straddles the node.
-inline void gimp_near(double xi, const GimpShape& k, double& S, double& dS) {
+template <class T>
+void gimp_near(const T& xi, const GimpShape& k, T& S, T& dS) {
   S = 1.0 - (xi * xi + k.lp * k.lp) * k.inv_2hlp;
   dS = -xi * k.inv_hlp;
 }
 // l_p < |xi| <= h - l_p: the domain lies inside one cell, the linear hat.
-inline void gimp_hat(double xi, const GimpShape& k, double& S, double& dS) {
-  S = 1.0 - std::fabs(xi) * k.inv_h;
-  dS = -std::copysign(k.inv_h, xi);
+template <class T>
+void gimp_hat(const T& xi, const GimpShape& k, T& S, T& dS) {
+  const T slope = T{} + k.inv_h;
+  S = 1.0 - abs_of(xi) * k.inv_h;
+  dS = xi < 0 ? slope : -slope;
 }
 // h - l_p < |xi| < h + l_p: the domain straddles the cell's far node.
-inline void gimp_far(double xi, const GimpShape& k, double& S, double& dS) {
-  const double r = std::max(k.h + k.lp - std::fabs(xi), 0.0);  // zero beyond h + l_p
+template <class T>
+void gimp_far(const T& xi, const GimpShape& k, T& S, T& dS) {
+  const T reach = k.h + k.lp - abs_of(xi);
+  const T r = reach > 0 ? reach : T{};  // zero beyond h + l_p
   S = r * r * k.inv_4hlp;
-  dS = -std::copysign(r * k.inv_2hlp, xi);
+  const T slope = r * k.inv_2hlp;
+  dS = xi < 0 ? slope : -slope;
 }
 
 // The 1D weight at any xi: the piece its region calls for.
@@ -89,36 +113,30 @@ struct Stencil {
   int base_i = 0, base_j = 0;
 };
 
-// First node index (per axis) that can carry a non-zero weight: nodes with
-// x_i > x_p - h - l_p, i.e. floor((x_p - l_p - origin) / h).
-inline int gimp_base_node(double xp, double origin, const GimpShape& k) {
-  return static_cast<int>(std::floor((xp - k.lp - origin) * k.inv_h));
-}
-
-// One axis of a stencil. From the base node, xi lies in [l_p, h + l_p) for
-// node 0, [l_p - h, l_p) for node 1 and [l_p - 2h, l_p - h) for node 2, so
-// each node has two candidate pieces. (Computing both and masking one out
-// was slower: with points sorted, the branches are predictable.)
-inline void gimp_axis(double xp, double origin, const GimpShape& k, int& base, double w[3],
-                      double d[3]) {
-  base = gimp_base_node(xp, origin, k);
-  const double x0 = xp - (origin + base * k.h);
-  const double x1 = xp - (origin + (base + 1) * k.h);
-  const double x2 = xp - (origin + (base + 2) * k.h);
-  double s_hat, d_hat, s_far, d_far, s_near, d_near;
+// One axis of the stencils of one point (T = double, I = int) or eight
+// (T = Lane8, I = Int8). The base node is the first node that can carry a
+// non-zero weight: x_i > x_p - h - l_p, i.e. floor((x_p - l_p - origin) / h).
+// From it, xi lies in [l_p, h + l_p) for node 0, [l_p - h, l_p) for node 1
+// and [l_p - 2h, l_p - h) for node 2, so each node has two candidate pieces;
+// both are computed and a select keeps one.
+template <class T, class I>
+void gimp_axis(const T& xp, double origin, const GimpShape& k, I& base, T w[3], T d[3]) {
+  base = floor_to_int((xp - k.lp - origin) * k.inv_h);
+  const T x0 = xp - (origin + to_real(base) * k.h);
+  const T x1 = xp - (origin + to_real(base + 1) * k.h);
+  const T x2 = xp - (origin + to_real(base + 2) * k.h);
+  T s_hat, d_hat, s_far, d_far, s_near, d_near;
   gimp_hat(x0, k, s_hat, d_hat);
   gimp_far(x0, k, s_far, d_far);
-  const bool hat0 = x0 <= k.h - k.lp;
+  const auto hat0 = x0 <= k.h - k.lp;
   w[0] = hat0 ? s_hat : s_far;
   d[0] = hat0 ? d_hat : d_far;
   gimp_near(x1, k, s_near, d_near);
   gimp_hat(x1, k, s_hat, d_hat);
-  const bool near1 = x1 >= -k.lp;
+  const auto near1 = x1 >= -k.lp;
   w[1] = near1 ? s_near : s_hat;
   d[1] = near1 ? d_near : d_hat;
-  gimp_far(x2, k, s_far, d_far);  // zero beyond h + l_p
-  w[2] = s_far;
-  d[2] = d_far;
+  gimp_far(x2, k, w[2], d[2]);  // zero beyond h + l_p
 }
 
 // Fills the stencil of a particle at (xp, yp) on a grid with the given origin.

@@ -89,20 +89,43 @@ void locate_points(World& w) {
   w.stencils.resize(n);
   w.bin_key.resize(n);
   int bad = n, i_lo = g.nx, i_hi = -1, j_lo = g.ny, j_hi = -1;
+  const int blocks = (n + 7) / 8;
+  // Eight points at a time (Lane8, gimp.hpp); the last block repeats its
+  // last point where the points run out.
 #pragma omp parallel for schedule(static) reduction(min : bad, i_lo, j_lo) reduction(max : i_hi, j_hi)
-  for (int p = 0; p < n; ++p) {
-    Stencil& st = w.stencils[p];
-    gimp_stencil(pts.x[p], pts.y[p], g.origin_x, g.origin_y, w.gimp, st);
-    const bool inside = std::isfinite(pts.x[p]) && std::isfinite(pts.y[p]) && st.base_i >= 0 &&
-                        st.base_j >= 0 && st.base_i + 2 < g.nx && st.base_j + 2 < g.ny;
-    if (!inside) {
-      bad = std::min(bad, p);
-      continue;
+  for (int blk = 0; blk < blocks; ++blk) {
+    const int first = 8 * blk, count = std::min(8, n - first);
+    Lane8 x, y;
+    for (int l = 0; l < 8; ++l) {
+      x[l] = pts.x[first + std::min(l, count - 1)];
+      y[l] = pts.y[first + std::min(l, count - 1)];
     }
-    i_lo = std::min(i_lo, st.base_i);
-    i_hi = std::max(i_hi, st.base_i);
-    j_lo = std::min(j_lo, st.base_j);
-    j_hi = std::max(j_hi, st.base_j);
+    Int8 base_i, base_j;
+    Lane8 wx[3], dx[3], wy[3], dy[3];
+    gimp_axis(x, g.origin_x, w.gimp, base_i, wx, dx);
+    gimp_axis(y, g.origin_y, w.gimp, base_j, wy, dy);
+    for (int l = 0; l < count; ++l) {
+      const int p = first + l;
+      Stencil& st = w.stencils[p];
+      st.base_i = static_cast<int>(base_i[l]);
+      st.base_j = static_cast<int>(base_j[l]);
+      st.wx = Lane4{wx[0][l], wx[1][l], wx[2][l], 0.0};
+      st.dx = Lane4{dx[0][l], dx[1][l], dx[2][l], 0.0};
+      for (int a = 0; a < 3; ++a) {
+        st.wy[a] = wy[a][l];
+        st.dy[a] = dy[a][l];
+      }
+      const bool inside = std::isfinite(x[l]) && std::isfinite(y[l]) && st.base_i >= 0 &&
+                          st.base_j >= 0 && st.base_i + 2 < g.nx && st.base_j + 2 < g.ny;
+      if (!inside) {
+        bad = std::min(bad, p);
+        continue;
+      }
+      i_lo = std::min(i_lo, st.base_i);
+      i_hi = std::max(i_hi, st.base_i);
+      j_lo = std::min(j_lo, st.base_j);
+      j_hi = std::max(j_hi, st.base_j);
+    }
   }
   if (bad < n) point_left_grid(w, bad);
   if (n == 0) i_lo = i_hi = j_lo = j_hi = 0;
