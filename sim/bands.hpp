@@ -60,26 +60,25 @@ inline void own_rows(const World& w, int& first, int& last) {
   first = std::min(g.j_begin + r.begin * kBandRows, last);
 }
 
-// Runs visit(band, point) for every point of the calling thread's bands,
-// band by band. Reads only: no barrier.
+// Runs visit(band) for each of the calling thread's bands, in order; the
+// band's points are order[band_start[band] .. band_start[band + 1]). For
+// phases that write only their own points: no barrier.
 template <class Visit>
-void for_own_points(const World& w, Visit visit) {
+void for_own_bands(const World& w, Visit visit) {
   const BandRange r = own_bands(w);
-  for (int b = r.begin; b < r.end; ++b)
-    for (int s = w.band_start[b]; s < w.band_start[b + 1]; ++s) visit(b, w.order[s]);
+  for (int b = r.begin; b < r.end; ++b) visit(b);
 }
 
-// As for_own_points, for visits that add to grid nodes: even bands first,
+// As for_own_bands, for visits that add to grid nodes: even bands first,
 // then (after a barrier) odd bands. Two bands of one parity are a band apart
 // and a stencil spans three node rows, so no two threads add to one node at
 // once, and each node receives its sums in the same order whatever the
 // number of threads. Ends with a barrier.
 template <class Visit>
-void scatter_own_points(const World& w, Visit visit) {
+void scatter_own_bands(const World& w, Visit visit) {
   const BandRange r = own_bands(w);
   for (int parity = 0; parity < 2; ++parity) {
-    for (int b = r.begin + ((r.begin & 1) != parity); b < r.end; b += 2)
-      for (int s = w.band_start[b]; s < w.band_start[b + 1]; ++s) visit(b, w.order[s]);
+    for (int b = r.begin + ((r.begin & 1) != parity); b < r.end; b += 2) visit(b);
 #pragma omp barrier
   }
 }

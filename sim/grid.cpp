@@ -33,7 +33,9 @@ Grid make_grid(const Scenario& s) {
   g.ny = cells_y + 2 * pad + 1;
   g.stride = g.nx + 1;
   const std::size_t n = static_cast<std::size_t>(g.stride) * g.ny;
-  for (auto* v : {&g.mass, &g.px, &g.py, &g.vx, &g.vy, &g.fx, &g.fy, &g.ax, &g.ay}) v->assign(n, 0.0);
+  for (auto* v : {&g.mass, &g.px, &g.py, &g.vx, &g.vy, &g.fx, &g.fy, &g.ax, &g.ay, &g.held_ax,
+                  &g.held_ay})
+    v->assign(n, 0.0);
   g.points.assign(n, 0);
   g.fix_x.assign(n, 0);
   g.fix_y.assign(n, 0);

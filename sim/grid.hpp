@@ -19,6 +19,9 @@ struct Grid {
   // Per node, indexed j * stride + i: mass and momentum (Eqs. 26, 27), velocity
   // p/m, force (Eqs. 16, 17) and acceleration f/m.
   std::vector<double> mass, px, py, vx, vy, fx, fy, ax, ay;
+  // The part of (ax, ay) that walls make: all of a held component's
+  // acceleration (its force is zero), 0 for a free one.
+  std::vector<double> held_ax, held_ay;
   // Points whose weight on the node is positive: a point alone on all its
   // nodes is a free body (see update_stress).
   std::vector<int> points;

@@ -61,8 +61,7 @@ double update_point_stress(World& w, int p, double dt) {
   // out of the grid (phi = 10 and 15 at 8370 points). Soil does not dilate
   // like that: a point's volume is held at most kMaxExpansion times its
   // initial one. Not in the paper.
-  pts.density[p] =
-      std::max(pts.density[p], w.material_specs[pts.material[p]].density / kMaxExpansion);
+  pts.density[p] = std::max(pts.density[p], mat.min_density);
   return work;
 }
 
@@ -97,51 +96,68 @@ double update_stress(World& w, double dt) {
 // while its stencil and stress are still in cache. The nodal velocities the
 // stress update reads do not change in this phase.
 void update_stress_and_forces(World& w, const StepInput& in) {
-  scatter_own_points(w, [&](int band, int p) {
-    w.band_sums[band * kBandSums + 0] += update_point_stress(w, p, in.dt);
-    scatter_point_force(w, p, in.gravity);
+  scatter_own_bands(w, [&](int band) {
+    double work = 0;
+    for (int s = w.band_start[band]; s < w.band_start[band + 1]; ++s) {
+      const int p = w.order[s];
+      work += update_point_stress(w, p, in.dt);
+      scatter_point_force(w, p, in.gravity);
+    }
+    w.band_sums[band * kBandSums + 0] = work;
   });
 }
 
 void grid_to_points(World& w, const StepInput& in) {
-  Particles& pts = w.points;
   const Grid& g = w.grid;
   const double keep = 1.0 / (1.0 + in.damping);  // v := v / (1 + theta)
-  for_own_points(w, [&](int band, int p) {
-    const Stencil& st = w.stencils[p];
-    Lane4 sax{}, say{}, svx{}, svy{}, swx{}, swy{};
-    for (int b = 0; b < 3; ++b) {
-      const int row = g.node(st.base_i, st.base_j + b);
-      const Lane4 S = st.wx * st.wy[b];
-      const Lane4 nax = load4(&g.ax[row]), nay = load4(&g.ay[row]);
-      sax += S * nax;
-      say += S * nay;
-      // A held component's acceleration is all the wall's (its force is
-      // zero). Masked by a multiply, not a branch.
-      const Lane4 held_x{double(g.fix_x[row]), double(g.fix_x[row + 1]), double(g.fix_x[row + 2]), 0};
-      const Lane4 held_y{double(g.fix_y[row]), double(g.fix_y[row + 1]), double(g.fix_y[row + 2]), 0};
-      swx += S * held_x * nax;
-      swy += S * held_y * nay;
-      svx += S * load4(&g.vx[row]);
-      svy += S * load4(&g.vy[row]);
+  // Raw pointers: the band's sums below stay in registers instead of being
+  // reloaded after every store to a point array.
+  double* const px = w.points.x.data();
+  double* const py = w.points.y.data();
+  double* const pvx = w.points.vx.data();
+  double* const pvy = w.points.vy.data();
+  const double* const mass = w.points.mass.data();
+  const std::uint8_t* const material = w.points.material.data();
+  for_own_bands(w, [&](int band) {
+    double gravity_work = 0, kinetic = 0, moving = 0, damped = 0, signal = 0, walled = 0;
+    for (int s = w.band_start[band]; s < w.band_start[band + 1]; ++s) {
+      const int p = w.order[s];
+      const Stencil& st = w.stencils[p];
+      Lane4 sax{}, say{}, svx{}, svy{}, swx{}, swy{};
+      for (int b = 0; b < 3; ++b) {
+        const int row = g.node(st.base_i, st.base_j + b);
+        const Lane4 S = st.wx * st.wy[b];
+        sax += S * load4(&g.ax[row]);
+        say += S * load4(&g.ay[row]);
+        swx += S * load4(&g.held_ax[row]);
+        swy += S * load4(&g.held_ay[row]);
+        svx += S * load4(&g.vx[row]);
+        svy += S * load4(&g.vy[row]);
+      }
+      const double vx = sum3(svx), vy = sum3(svy), wx = sum3(swx), wy = sum3(swy);
+      const double dx = in.dt * vx, dy = in.dt * vy;  // Eq. (29)
+      px[p] += dx;
+      py[p] += dy;
+      const double ux = pvx[p] + in.dt * sum3(sax), uy = pvy[p] + in.dt * sum3(say);  // Eq. (30)
+      const double kx = ux * keep, ky = uy * keep;  // damping of the gravity stage
+      pvx[p] = kx;
+      pvy[p] = ky;
+      const double m = mass[p];
+      const double v2 = kx * kx + ky * ky;
+      gravity_work += m * (in.gravity[0] * dx + in.gravity[1] * dy);
+      kinetic += 0.5 * m * v2;
+      moving += 0.5 * m * (vx * vx + vy * vy);
+      damped += 0.5 * m * (ux * ux + uy * uy - v2);
+      signal = std::max(signal, w.materials[material[p]].wave_speed + std::sqrt(v2));
+      walled += 0.5 * m * in.dt * in.dt * (wx * wx + wy * wy);
     }
-    const double ax = sum3(sax), ay = sum3(say), vx = sum3(svx), vy = sum3(svy);
-    const double wx = sum3(swx), wy = sum3(swy);
-    const double dx = in.dt * vx, dy = in.dt * vy;  // Eq. (29)
-    pts.x[p] += dx;
-    pts.y[p] += dy;
-    const double ux = pts.vx[p] + in.dt * ax, uy = pts.vy[p] + in.dt * ay;  // Eq. (30)
-    pts.vx[p] = ux * keep;  // damping of the gravity stage
-    pts.vy[p] = uy * keep;
-    const double m = pts.mass[p];
-    const double v2 = pts.vx[p] * pts.vx[p] + pts.vy[p] * pts.vy[p];
     double* sums = &w.band_sums[band * kBandSums];
-    sums[1] += m * (in.gravity[0] * dx + in.gravity[1] * dy);
-    sums[2] += 0.5 * m * v2;
-    sums[3] += 0.5 * m * (vx * vx + vy * vy);
-    sums[4] += 0.5 * m * (ux * ux + uy * uy - v2);
-    sums[5] = std::max(sums[5], w.materials[pts.material[p]].wave_speed + std::sqrt(v2));
-    sums[6] += 0.5 * m * in.dt * in.dt * (wx * wx + wy * wy);
+    sums[1] = gravity_work;
+    sums[2] = kinetic;
+    sums[3] = moving;
+    sums[4] = damped;
+    sums[5] = signal;
+    sums[6] = walled;
   });
 }
 

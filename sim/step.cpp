@@ -152,16 +152,19 @@ void reset_grid(World& w) {
 void points_to_grid(World& w) {
   const Particles& pts = w.points;
   Grid& g = w.grid;
-  scatter_own_points(w, [&](int, int p) {
-    const Stencil& st = w.stencils[p];
-    const double m = pts.mass[p], mvx = m * pts.vx[p], mvy = m * pts.vy[p];
-    for (int b = 0; b < 3; ++b) {
-      const int row = g.node(st.base_i, st.base_j + b);
-      const Lane4 S = st.wx * st.wy[b];                          // S_ip, Eq. (12)
-      store4(&g.mass[row], load4(&g.mass[row]) + S * m);         // Eq. (26)
-      store4(&g.px[row], load4(&g.px[row]) + S * mvx);           // Eq. (27)
-      store4(&g.py[row], load4(&g.py[row]) + S * mvy);
-      for (int a = 0; a < 3; ++a) g.points[row + a] += S[a] > 0.0;
+  scatter_own_bands(w, [&](int band) {
+    for (int s = w.band_start[band]; s < w.band_start[band + 1]; ++s) {
+      const int p = w.order[s];
+      const Stencil& st = w.stencils[p];
+      const double m = pts.mass[p], mvx = m * pts.vx[p], mvy = m * pts.vy[p];
+      for (int b = 0; b < 3; ++b) {
+        const int row = g.node(st.base_i, st.base_j + b);
+        const Lane4 S = st.wx * st.wy[b];                   // S_ip, Eq. (12)
+        store4(&g.mass[row], load4(&g.mass[row]) + S * m);  // Eq. (26)
+        store4(&g.px[row], load4(&g.px[row]) + S * mvx);    // Eq. (27)
+        store4(&g.py[row], load4(&g.py[row]) + S * mvy);
+        for (int a = 0; a < 3; ++a) g.points[row + a] += S[a] > 0.0;
+      }
     }
   });
 }
@@ -212,6 +215,8 @@ void update_nodal_momentum(World& w, double dt) {
       const double inv = g.mass[k] > 0.0 ? 1.0 / g.mass[k] : 0.0;
       g.ax[k] = g.ax[k] * inv_dt + g.fx[k] * inv;
       g.ay[k] = g.ay[k] * inv_dt + g.fy[k] * inv;
+      g.held_ax[k] = g.fix_x[k] ? g.ax[k] : 0.0;
+      g.held_ay[k] = g.fix_y[k] ? g.ay[k] : 0.0;
       g.vx[k] = g.px[k] * inv;
       g.vy[k] = g.py[k] * inv;
     }

@@ -42,9 +42,6 @@ struct World {
 // spans 3 rows), so every other band can be scattered to the grid at once.
 constexpr int kBandRows = 4;
 
-// Largest volume of a point relative to its initial volume (see update_stress).
-constexpr double kMaxExpansion = 2.0;
-
 // Partial sums per band (band_sums): stress work, gravity work, kinetic
 // energy, moving kinetic energy, damping loss, signal speed, wall change.
 // Summed band by band in order, so they do not depend on the number of threads.
