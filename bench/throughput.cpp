@@ -78,11 +78,13 @@ double vector_bytes(const sim::World& w, double* grid) {
     points += bytes(*v);
   const sim::Grid& g = w.grid;
   double nodes = bytes(g.points) + bytes(g.fix_x) + bytes(g.fix_y) + bytes(g.row_sums);
-  for (const auto* v : {&g.mass, &g.px, &g.py, &g.vx, &g.vy, &g.fx, &g.fy, &g.ax, &g.ay})
+  for (const auto* v : {&g.mass, &g.px, &g.py, &g.vx, &g.vy, &g.fx, &g.fy, &g.ax, &g.ay,
+                        &g.held_ax, &g.held_ay})
     nodes += bytes(*v);
   const double scratch = bytes(w.stencils) + bytes(w.bin_key) + bytes(w.order) +
-                         bytes(w.band_start) + bytes(w.bin_count) + bytes(w.thread_bands) + bytes(w.band_sums) +
-                         bytes(w.material_specs) + bytes(w.materials);
+                         bytes(w.band_start) + bytes(w.thread_counts) + bytes(w.thread_window) +
+                         bytes(w.thread_bands) + bytes(w.band_sums) + bytes(w.material_specs) +
+                         bytes(w.materials);
   if (grid) *grid = nodes;
   return points + nodes + scratch;
 }

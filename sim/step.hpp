@@ -42,7 +42,8 @@ void step(World& world, const StepInput& input, StepReport& report);
 
 // The phases, in the order step() runs them. Public so tests can drive them
 // one by one (outside a parallel region the one thread owns every band).
-void locate_points(World& world);          // GIMP stencils, Eqs. (12), (13); sorts into bands
+void locate_points(World& world);  // GIMP stencils, Eqs. (12), (13); sorts into bands; throws
+                                   // SimulationError if a point left the grid
 void reset_grid(World& world);
 void points_to_grid(World& world);         // nodal mass and momentum, Eqs. (26), (27)
 void enforce_walls_on_momentum(World& world);  // kinetic energy taken: grid.row_sums
@@ -51,6 +52,14 @@ void update_stress_and_forces(World& world, const StepInput& input);
 void update_nodal_momentum(World& world, double dt);  // Eq. (28)
 void grid_to_points(World& world, const StepInput& input);  // Eqs. (29), (30); sums: band_sums
 StepReport sum_step_report(const World& world);  // the sums above, in a fixed order
+
+// locate_points as step() runs it, by every thread of its team: after
+// prepare_locate (outside the team), locate_and_sort returns false on every
+// thread if a point left the grid (world.bad_point), and the step then
+// throws with throw_point_left_grid.
+void prepare_locate(World& world);
+bool locate_and_sort(World& world);
+[[noreturn]] void throw_point_left_grid(const World& world);
 
 // The stress update alone, every point in index order: returns the stress work.
 double update_stress(World& world, double dt);

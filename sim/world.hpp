@@ -33,7 +33,10 @@ struct World {
   std::vector<int> bin_key;       // per point: grid index of its stencil's base node
   std::vector<int> order;         // points sorted by their stencil's base node
   std::vector<int> band_start;    // order[band_start[b] .. band_start[b+1]) is band b
-  std::vector<int> bin_count;     // counting-sort workspace
+  std::vector<int> thread_counts; // counting sort: per thread, points per bin (base node)
+  std::vector<int> thread_window; // per thread: touched window and first point off the grid
+  int bins = 0;                   // base nodes in the window
+  int bad_point = 0;              // first point off the grid (the number of points if none)
   std::vector<int> thread_bands;  // thread t owns bands [thread_bands[t], thread_bands[t+1])
   std::vector<double> band_sums;  // per band partial sums of the step's reductions
 };
