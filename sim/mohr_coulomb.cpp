@@ -94,18 +94,20 @@ MohrCoulomb MohrCoulomb::make(double E, double nu, double c, double phi, double 
   return mc;
 }
 
-PrincipalStress principal_stresses(const Stress& s) {
-  // Closed-form 2x2 eigenpair (Mohr's circle): this runs for every point in
-  // every step, where a general eigen-solver would cost far more.
-  PrincipalStress p;
+namespace {
+
+// Mohr's circle of the in-plane stress: half the difference of the normal
+// stresses and the radius.
+double half_difference(const Stress& s) { return 0.5 * (s.xx - s.yy); }
+double circle_radius(const Stress& s) {
+  const double half = half_difference(s);
+  return std::sqrt(half * half + s.xy * s.xy);
+}
+
+// The principal values alone, sorted; the directions (a division) are left
+// to principal_directions, which only a plastic return needs.
+void principal_values(const Stress& s, double radius, PrincipalStress& p) {
   const double centre = 0.5 * (s.xx + s.yy);
-  const double half = 0.5 * (s.xx - s.yy);
-  const double radius = std::sqrt(half * half + s.xy * s.xy);
-  if (radius > 0) {
-    const double inverse = 1 / radius;
-    p.cos2 = half * inverse;
-    p.sin2 = s.xy * inverse;
-  }
   const double hi = centre + radius, lo = centre - radius, zz = s.zz;
   // Plane strain: sigma_zz is a principal stress too and may sort anywhere.
   if (zz >= hi) {
@@ -118,6 +120,25 @@ PrincipalStress principal_stresses(const Stress& s) {
     p.s = {hi, lo, zz};
     p.zz_slot = 2;
   }
+}
+
+void principal_directions(const Stress& s, double radius, PrincipalStress& p) {
+  if (radius > 0) {
+    const double inverse = 1 / radius;
+    p.cos2 = half_difference(s) * inverse;
+    p.sin2 = s.xy * inverse;
+  }
+}
+
+}  // namespace
+
+PrincipalStress principal_stresses(const Stress& s) {
+  // Closed-form 2x2 eigenpair (Mohr's circle): this runs for every point in
+  // every step, where a general eigen-solver would cost far more.
+  PrincipalStress p;
+  const double radius = circle_radius(s);
+  principal_values(s, radius, p);
+  principal_directions(s, radius, p);
   return p;
 }
 
@@ -184,9 +205,12 @@ ReturnRegion mohr_coulomb_return_principal(const MohrCoulomb& mc, Principal3& s)
 }
 
 ReturnRegion mohr_coulomb_return(const MohrCoulomb& mc, Stress& s) {
-  PrincipalStress p = principal_stresses(s);
+  PrincipalStress p;
+  const double radius = circle_radius(s);
+  principal_values(s, radius, p);
   const double f = yield_function(mc, p.s);
   if (f <= 0) return ReturnRegion::Elastic;  // untouched: no round trip through p
+  principal_directions(s, radius, p);
   const ReturnRegion region = plastic_return(mc, p.s, f);
   // Isotropic elasticity and isotropic f, g: the return changes principal
   // values only, so they go back on the trial's principal directions.
