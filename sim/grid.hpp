@@ -23,8 +23,9 @@ struct Grid {
   // acceleration (its force is zero), 0 for a free one.
   std::vector<double> held_ax, held_ay;
   // Points whose weight on the node is positive: a point alone on all its
-  // nodes is a free body (see update_stress).
-  std::vector<int> points;
+  // nodes is a free body (see update_point_stress). Counted in doubles (exact
+  // up to 2^53) so a stencil row adds to three nodes as one vector.
+  std::vector<double> points;
   // Velocity components held at zero by the walls (1 = fixed).
   std::vector<std::uint8_t> fix_x, fix_y;
 

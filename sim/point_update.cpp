@@ -24,7 +24,8 @@ double update_point_stress(World& w, int p, double dt) {
   for (int b = 0; b < 3; ++b) {
     const int row = g.node(st.base_i, st.base_j + b);
     const Lane4 S = st.wx * st.wy[b];
-    for (int a = 0; a < 3; ++a) alone &= (S[a] == 0.0) | (g.points[row + a] == 1);
+    const auto shared = (S != 0.0) & (load4(&g.points[row]) != 1.0);  // lanes 0..2 matter
+    alone &= !(shared[0] | shared[1] | shared[2]);
     const Lane4 gx = st.dx * st.wy[b], gy = st.wx * st.dy[b];
     const Lane4 vx = load4(&g.vx[row]), vy = load4(&g.vy[row]);
     lxx += vx * gx;

@@ -42,7 +42,7 @@ void reset_grid(World& w) {
     for (int i = g.i_begin; i < g.i_end; ++i) {
       const int k = g.node(i, j);
       g.mass[k] = g.px[k] = g.py[k] = g.fx[k] = g.fy[k] = 0.0;
-      g.points[k] = 0;
+      g.points[k] = 0.0;
     }
   }
 }
@@ -61,7 +61,7 @@ void points_to_grid(World& w) {
         store4(&g.mass[row], load4(&g.mass[row]) + S * m);  // Eq. (26)
         store4(&g.px[row], load4(&g.px[row]) + S * mvx);    // Eq. (27)
         store4(&g.py[row], load4(&g.py[row]) + S * mvy);
-        for (int a = 0; a < 3; ++a) g.points[row + a] += S[a] > 0.0;
+        store4(&g.points[row], load4(&g.points[row]) + (S > 0.0 ? kOnes : Lane4{}));
       }
     }
   });
