@@ -82,7 +82,7 @@ double vector_bytes(const sim::World& w, double* grid) {
                         &g.held_ax, &g.held_ay})
     nodes += bytes(*v);
   const double scratch = bytes(w.stencils) + bytes(w.bin_key) + bytes(w.order) +
-                         bytes(w.band_start) + bytes(w.thread_counts) + bytes(w.thread_window) +
+                         bytes(w.band_start) + bytes(w.thread_counts) + bytes(w.thread_window) + bytes(w.thread_totals) +
                          bytes(w.thread_bands) + bytes(w.band_sums) + bytes(w.material_specs) +
                          bytes(w.materials);
   if (grid) *grid = nodes;

@@ -102,29 +102,47 @@ void set_window(World& w, int threads) {
   w.bins = (g.i_end - 2 - g.i_begin) * (g.j_end - 2 - g.j_begin);
   w.thread_counts.resize(static_cast<std::size_t>(threads) * w.bins);
   w.order.resize(n);
+  const int bands = (g.j_end - g.j_begin + kBandRows - 1) / kBandRows;
+  w.band_start.resize(static_cast<std::size_t>(bands) + 1);
 }
 
 // Exclusive prefix of the counts, bin by bin and within a bin thread by
 // thread: thread t's points of bin k go after those of threads < t, and each
 // thread takes its points in index order, so the sort is stable by point
-// index, the same order whatever the number of threads. Then the bands:
-// band b starts at the first point whose base node is in its rows.
-void place_bins_and_bands(World& w, int threads) {
-  const Grid& g = w.grid;
-  const int width = g.i_end - 2 - g.i_begin;
-  const int bands = (g.j_end - g.j_begin + kBandRows - 1) / kBandRows;
-  w.band_start.resize(static_cast<std::size_t>(bands) + 1);
-  int running = 0, band = 0;
-  for (int k = 0; k < w.bins; ++k) {
-    if (k % width == 0 && (k / width) % kBandRows == 0) w.band_start[band++] = running;
-    for (int t = 0; t < threads; ++t) {
-      int& c = w.thread_counts[static_cast<std::size_t>(t) * w.bins + k];
+// index, the same order whatever the number of threads. Each thread does the
+// prefix over its own run of bins, from the totals of the runs before it, and
+// notes where each band starts: band b starts at the first point whose base
+// node is in its rows.
+void prefix_own_bins(World& w, int t, int threads) {
+  const int width = w.grid.i_end - 2 - w.grid.i_begin;
+  const int first = static_cast<int>(static_cast<long>(w.bins) * t / threads);
+  const int end = static_cast<int>(static_cast<long>(w.bins) * (t + 1) / threads);
+  int total = 0;
+  for (int k = first; k < end; ++k)
+    for (int u = 0; u < threads; ++u) total += w.thread_counts[static_cast<std::size_t>(u) * w.bins + k];
+  w.thread_totals[t] = total;
+#pragma omp barrier
+  int running = 0;
+  for (int u = 0; u < t; ++u) running += w.thread_totals[u];
+  for (int k = first; k < end; ++k) {
+    if (k % width == 0 && (k / width) % kBandRows == 0) w.band_start[k / width / kBandRows] = running;
+    for (int u = 0; u < threads; ++u) {
+      int& c = w.thread_counts[static_cast<std::size_t>(u) * w.bins + k];
       const int here = c;
       c = running;
       running += here;
     }
   }
-  while (band <= bands) w.band_start[band++] = running;
+}
+
+// After the prefix: the bands past the last base row start (and end) at the
+// last point; the threads' bands and the step's partial sums.
+void finish_bands(World& w, int threads) {
+  const Grid& g = w.grid;
+  const int width = g.i_end - 2 - g.i_begin;
+  const int bands = static_cast<int>(w.band_start.size()) - 1;
+  const int filled = (w.bins / width + kBandRows - 1) / kBandRows;
+  for (int b = filled; b <= bands; ++b) w.band_start[b] = static_cast<int>(w.points.size());
   partition_bands(w, threads);
   w.band_sums.assign(static_cast<std::size_t>(bands) * kBandSums, 0.0);
   w.grid.row_sums.assign(static_cast<std::size_t>(g.j_end - g.j_begin), 0.0);
@@ -140,7 +158,8 @@ bool locate_and_sort(World& w) {
   const int blocks = (n + 7) / 8;
   const int first_block = blocks * t / threads, end_block = blocks * (t + 1) / threads;
   const int lo = std::min(n, 8 * first_block), hi = std::min(n, 8 * end_block);
-  compute_stencils(w, first_block, end_block, &w.thread_window[static_cast<std::size_t>(t) * kWindowInts]);
+  int* window = &w.thread_window[static_cast<std::size_t>(t) * kWindowInts];
+  compute_stencils(w, first_block, end_block, window);
 #pragma omp barrier
 #pragma omp single
   set_window(w, threads);
@@ -155,8 +174,10 @@ bool locate_and_sort(World& w) {
     ++counts[w.bin_key[p]];
   }
 #pragma omp barrier
-#pragma omp single
-  place_bins_and_bands(w, threads);
+  prefix_own_bins(w, t, threads);
+#pragma omp barrier
+#pragma omp single nowait
+  finish_bands(w, threads);
   for (int p = lo; p < hi; ++p) w.order[counts[w.bin_key[p]]++] = p;
 #pragma omp barrier
   return true;
@@ -167,6 +188,7 @@ void prepare_locate(World& w) {
   w.stencils.resize(n);
   w.bin_key.resize(n);
   w.thread_window.resize(static_cast<std::size_t>(omp_get_max_threads()) * kWindowInts);
+  w.thread_totals.resize(static_cast<std::size_t>(omp_get_max_threads()));
 }
 
 void locate_points(World& w) {

@@ -35,6 +35,7 @@ struct World {
   std::vector<int> band_start;    // order[band_start[b] .. band_start[b+1]) is band b
   std::vector<int> thread_counts; // counting sort: per thread, points per bin (base node)
   std::vector<int> thread_window; // per thread: touched window and first point off the grid
+  std::vector<int> thread_totals; // per thread: points in its run of bins
   int bins = 0;                   // base nodes in the window
   int bad_point = 0;              // first point off the grid (the number of points if none)
   std::vector<int> thread_bands;  // thread t owns bands [thread_bands[t], thread_bands[t+1])
