@@ -37,7 +37,31 @@ inline BandRange own_bands(const World& w) {
   return {w.thread_bands[t], w.thread_bands[t + 1]};
 }
 
-// Splits the bands among `threads` threads, about equal points each.
+// Points in bands [first, end) of one parity.
+inline long parity_points(const World& w, int first, int end, int parity) {
+  long n = 0;
+  for (int b = first + ((first & 1) != parity); b < end; b += 2)
+    n += w.band_start[b + 1] - w.band_start[b];
+  return n;
+}
+
+// The time of a scatter phase, in points: each parity takes as long as its
+// busiest thread (the threads meet at a barrier after each).
+inline long scatter_cost(const World& w) {
+  long cost = 0;
+  for (int parity = 0; parity < 2; ++parity) {
+    long busiest = 0;
+    for (std::size_t t = 0; t + 1 < w.thread_bands.size(); ++t)
+      busiest = std::max(busiest, parity_points(w, w.thread_bands[t], w.thread_bands[t + 1], parity));
+    cost += busiest;
+  }
+  return cost;
+}
+
+// Splits the bands among `threads` threads: first about equal points each,
+// then each boundary moves by a band or two while that shortens the scatter
+// phases (scatter_cost). Equal totals can hide a thread with most of its
+// points in even bands: it works on while the other waits at the barrier.
 inline void partition_bands(World& w, int threads) {
   const int bands = static_cast<int>(w.band_start.size()) - 1;
   const long points = w.band_start[bands];
@@ -47,6 +71,24 @@ inline void partition_bands(World& w, int threads) {
   for (int t = 1; t < threads; ++t) {
     while (b < bands && static_cast<long>(w.band_start[b]) * threads < points * t) ++b;
     w.thread_bands[t] = b;
+  }
+  long cost = scatter_cost(w);
+  for (bool better = true; better;) {
+    better = false;
+    for (int t = 1; t < threads; ++t) {
+      for (const int move : {-2, -1, 1, 2}) {
+        const int was = w.thread_bands[t], to = was + move;
+        if (to < w.thread_bands[t - 1] || to > w.thread_bands[t + 1]) continue;
+        w.thread_bands[t] = to;
+        const long c = scatter_cost(w);
+        if (c < cost) {
+          cost = c;
+          better = true;
+        } else {
+          w.thread_bands[t] = was;
+        }
+      }
+    }
   }
 }
 
