@@ -1,9 +1,9 @@
 // Who does what inside the step's one parallel region.
 //
 // The points are sorted into bands of kBandRows base-node rows (see
-// sort_into_bands in step.cpp). Each thread owns a contiguous run of bands,
-// chosen so the threads hold about equal numbers of points, and every phase
-// of the step hands a thread the same points and the same node rows. What a
+// locate.cpp). Each thread owns a contiguous run of bands, chosen so the
+// threads hold about equal numbers of points (partition_bands), and every
+// phase of the step hands a thread the same points and the same node rows. What a
 // thread writes in one phase it reads in the next from its own cache: with
 // phases that handed points out in other ways (chunks of the point index,
 // bands on demand) the two cores of this machine spent their time passing
