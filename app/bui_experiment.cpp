@@ -48,7 +48,7 @@ double number(const std::string& path, int line, const char* name, const std::st
 
 // Half the side of a point's square, the painter's sqrt(V) / 2.
 double half_side(const sim::Particles& p, std::size_t i) {
-  return 0.5 * std::sqrt(p.mass[i] / p.density[i]);
+  return 0.5 * std::sqrt(p.volume(i));
 }
 
 }  // namespace

@@ -31,7 +31,7 @@ struct WorldPoints {
     const sim::Particles& p = w.points;
     return sim::Stress{p.sxx[i], p.syy[i], p.sxy[i], p.szz[i]};
   }
-  double volume(std::size_t i) const { return w.points.mass[i] / w.points.density[i]; }
+  double volume(std::size_t i) const { return w.points.volume(i); }
   int material(std::size_t i) const { return w.points.material[i]; }
   bool yielded(std::size_t i) const { return w.points.yielded[i] != 0; }
   const std::vector<sim::MaterialConstants>& materials() const { return w.materials; }

@@ -17,7 +17,7 @@ SurfaceProfile soil_surface(const sim::Scenario& s, const sim::World& w, double 
   for (std::size_t i = 0; i < pts.size(); ++i) {
     if (!w.materials[pts.material[i]].plastic) continue;
     const int k = std::clamp(static_cast<int>((pts.x[i] - p.x0) / bin), 0, bins - 1);
-    const double top = pts.y[i] + 0.5 * std::sqrt(pts.mass[i] / pts.density[i]);
+    const double top = pts.y[i] + 0.5 * std::sqrt(pts.volume(i));
     if (std::isnan(p.top[k]) || top > p.top[k]) p.top[k] = top;
   }
   return p;

@@ -145,7 +145,7 @@ double elastic_energy(const World& w) {
                       2 * p.sxy[i] * p.sxy[i];
     // sigma : C^-1 : sigma = ((1 + nu) sigma:sigma - nu tr(sigma)^2) / E
     const double density = (1 + m.poisson_ratio) * ss - m.poisson_ratio * tr * tr;
-    energy += 0.5 * p.mass[i] / p.density[i] * density / m.youngs_modulus;
+    energy += 0.5 * p.volume(i) * density / m.youngs_modulus;
   }
   return energy;
 }

@@ -30,7 +30,7 @@ ElasticColumnErrors elastic_column_errors(const Scenario& s, const World& w) {
   int top_n = 0;
   for (std::size_t i = 0; i < p.size(); ++i) {
     const double Y = p.y0[i] - s.domain_min[1];
-    const double V = p.mass[i] / p.density[i];
+    const double V = p.volume(i);
     const double syy = -rho * g * (H - Y);
     e_yy += V * std::pow(p.syy[i] - syy, 2);
     e_xx += V * std::pow(p.sxx[i] - k0 * syy, 2);

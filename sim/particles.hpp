@@ -26,6 +26,9 @@ struct Particles {
   std::vector<std::uint8_t> yielded;
 
   std::size_t size() const { return x.size(); }
+  // Current volume per unit thickness, V_p = m_p / rho_p (mass is conserved,
+  // density follows Eq. 25).
+  double volume(std::size_t p) const { return mass[p] / density[p]; }
   void resize(std::size_t n);
 };
 

@@ -52,7 +52,7 @@ double update_point_stress(World& w, int p, double dt) {
   pts.sxy[p] = s.xy;
   pts.szz[p] = s.zz;
   // Stress power of Eq. (3) over the step, midpoint stress, current volume.
-  const double volume = pts.mass[p] / pts.density[p];
+  const double volume = pts.volume(p);
   const double work = volume * 0.5 * ((old.xx + s.xx) * de.xx + (old.yy + s.yy) * de.yy +
                                       2.0 * (old.xy + s.xy) * de.xy);
   pts.density[p] *= std::exp(-(de.xx + de.yy));  // Eq. (25)
@@ -71,7 +71,7 @@ void scatter_point_force(World& w, int p, const Vec2& gravity) {
   const Particles& pts = w.points;
   Grid& g = w.grid;
   const Stencil& st = w.stencils[p];
-  const double V = pts.mass[p] / pts.density[p];
+  const double V = pts.volume(p);
   const double sxx = pts.sxx[p], syy = pts.syy[p], sxy = pts.sxy[p];
   const double mgx = pts.mass[p] * gravity[0], mgy = pts.mass[p] * gravity[1];
   for (int b = 0; b < 3; ++b) {

@@ -54,7 +54,7 @@ void write_vtu(const std::string& path, const World& w, double time) {
     });
     data_array(out, "Float64", "density", 1, n, [&](std::size_t i, int) { return p.density[i]; });
     data_array(out, "Float64", "volume", 1, n,
-               [&](std::size_t i, int) { return p.mass[i] / p.density[i]; });
+               [&](std::size_t i, int) { return p.volume(i); });
     data_array(out, "Int32", "material", 1, n, [&](std::size_t i, int) { return p.material[i]; });
     data_array(out, "UInt8", "yielded", 1, n, [&](std::size_t i, int) { return p.yielded[i]; });
     out << "</PointData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";

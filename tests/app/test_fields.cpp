@@ -134,7 +134,7 @@ TEST(Fields, SavedStateGivesTheSameValues) {
   for (std::size_t i = 0; i < p.size(); ++i) {
     s.ux.push_back(p.x[i] - p.ref_x[i]);
     s.uy.push_back(p.y[i] - p.ref_y[i]);
-    s.volume.push_back(p.mass[i] / p.density[i]);
+    s.volume.push_back(p.volume(i));
     s.material.push_back(p.material[i]);
     s.yielded.push_back(p.yielded[i]);
   }
