@@ -18,7 +18,11 @@ namespace {
 // Window partials per thread: i_lo, i_hi, j_lo, j_hi, first point off the grid.
 constexpr int kWindowInts = 5;
 
-[[noreturn]] void point_left_grid(const World& w, int p) {
+}  // namespace
+
+// Names the first point off the grid, its material, where it is and the grid.
+void throw_point_left_grid(const World& w) {
+  const int p = w.bad_point;
   std::ostringstream msg;
   msg.precision(6);
   msg << "point " << p << " (material '" << w.material_specs[w.points.material[p]].name
@@ -31,6 +35,8 @@ constexpr int kWindowInts = 5;
         << w.grid.origin_y + (w.grid.ny - 1) * w.grid.h << "]";
   throw SimulationError(msg.str());
 }
+
+namespace {
 
 // Stencils of the points of Lane8 blocks [first_block, end_block), eight
 // points at a time (gimp.hpp; the last block repeats its last point where the
@@ -193,9 +199,7 @@ void prepare_locate(World& w) {
 
 void locate_points(World& w) {
   prepare_locate(w);
-  if (!locate_and_sort(w)) point_left_grid(w, w.bad_point);
+  if (!locate_and_sort(w)) throw_point_left_grid(w);
 }
-
-void throw_point_left_grid(const World& w) { point_left_grid(w, w.bad_point); }
 
 }  // namespace sim

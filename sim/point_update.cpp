@@ -104,7 +104,7 @@ void update_stress_and_forces(World& w, const StepInput& in) {
       work += update_point_stress(w, p, in.dt);
       scatter_point_force(w, p, in.gravity);
     }
-    w.band_sums[band * kBandSums + 0] = work;
+    w.band_sums[band * kBandSums + kInternalWork] = work;
   });
 }
 
@@ -153,12 +153,12 @@ void grid_to_points(World& w, const StepInput& in) {
       walled += 0.5 * m * in.dt * in.dt * (wx * wx + wy * wy);
     }
     double* sums = &w.band_sums[band * kBandSums];
-    sums[1] = gravity_work;
-    sums[2] = kinetic;
-    sums[3] = moving;
-    sums[4] = damped;
-    sums[5] = signal;
-    sums[6] = walled;
+    sums[kGravityWork] = gravity_work;
+    sums[kKineticEnergy] = kinetic;
+    sums[kMovingKineticEnergy] = moving;
+    sums[kDampingLoss] = damped;
+    sums[kMaxSignal] = signal;
+    sums[kWallChangeOnPoints] = walled;
   });
 }
 

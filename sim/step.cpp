@@ -127,13 +127,13 @@ StepReport sum_step_report(const World& w) {
   for (const double row : w.grid.row_sums) r.wall_loss += row;
   for (std::size_t b = 0; b + 1 < w.band_start.size(); ++b) {
     const double* sums = &w.band_sums[b * kBandSums];
-    r.internal_work += sums[0];
-    r.gravity_work += sums[1];
-    r.kinetic_energy += sums[2];
-    r.moving_kinetic_energy += sums[3];
-    r.damping_loss += sums[4];
-    r.max_signal = std::max(r.max_signal, sums[5]);
-    r.wall_change_on_points += sums[6];
+    r.internal_work += sums[kInternalWork];
+    r.gravity_work += sums[kGravityWork];
+    r.kinetic_energy += sums[kKineticEnergy];
+    r.moving_kinetic_energy += sums[kMovingKineticEnergy];
+    r.damping_loss += sums[kDampingLoss];
+    r.max_signal = std::max(r.max_signal, sums[kMaxSignal]);
+    r.wall_change_on_points += sums[kWallChangeOnPoints];
   }
   r.transfer_loss = r.wall_loss - r.wall_change_on_points;
   return r;

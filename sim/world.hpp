@@ -46,9 +46,18 @@ struct World {
 // spans 3 rows), so every other band can be scattered to the grid at once.
 constexpr int kBandRows = 4;
 
-// Partial sums per band (band_sums): stress work, gravity work, kinetic
-// energy, moving kinetic energy, damping loss, signal speed, wall change.
-// Summed band by band in order, so they do not depend on the number of threads.
-constexpr int kBandSums = 7;
+// Partial sums per band, band_sums[band * kBandSums + which] (the StepReport
+// fields of the same names). Summed band by band in order, so they do not
+// depend on the number of threads.
+enum BandSum : int {
+  kInternalWork,
+  kGravityWork,
+  kKineticEnergy,
+  kMovingKineticEnergy,
+  kDampingLoss,
+  kMaxSignal,  // a maximum, not a sum
+  kWallChangeOnPoints,
+  kBandSums  // how many
+};
 
 }  // namespace sim
