@@ -177,7 +177,18 @@ int main(int argc, char** argv) {
     std::printf("%.0f\n", own_peak_rss());
     return 0;
   }
+  if (steps <= 0) {
+    std::fprintf(stderr, "throughput: STEPS = '%s': expected a positive whole number\n", argv[1]);
+    return 2;
+  }
   const std::string filter = argc > 2 ? argv[2] : "";
+  if (std::none_of(scenes.begin(), scenes.end(),
+                   [&](const Scene& sc) { return sc.label.find(filter) != std::string::npos; })) {
+    std::fprintf(stderr, "throughput: no scene label contains '%s'; the labels are:\n",
+                 filter.c_str());
+    for (const Scene& sc : scenes) std::fprintf(stderr, "  %s\n", sc.label.c_str());
+    return 2;
+  }
   std::printf("about %d steps per run at the scene's Courant number, under full gravity, no frames\n",
               steps);
   std::printf("granular column: 0.2 m x 0.4 m against the left wall, h = %.3g mm, 2x2 points per "
