@@ -24,6 +24,7 @@ nlohmann::json energy_json(const sim::EnergyBalance& e) {
           {"plastic_dissipation_J_per_m", e.plastic_dissipation},
           {"damping_loss_J_per_m", e.damping_loss},
           {"wall_loss_J_per_m", e.wall_loss},
+          {"friction_work_J_per_m", e.friction_work},
           {"transfer_loss_J_per_m", e.transfer_loss},
           {"relative_error", e.relative_error}};
 }

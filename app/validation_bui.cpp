@@ -157,7 +157,7 @@ std::vector<ValidationRow> bui_column_case(const ValidationSuite& suite) {
   for (const double h : {0.01, 0.005}) {
     sim::Scenario s = base;
     s.cell_size = h;
-    s.boundaries.bottom = sim::BoundaryKind::Roller;
+    s.boundaries.bottom = {sim::BoundaryKind::Roller, 0.0};
     s.domain_max[0] = kRollerDomainLength;
     const Run run = run_with_progress(s);
     const std::string name = run_name("Bui column, roller base, 1.5 m domain,", h, run);

@@ -54,8 +54,8 @@ sim::Scenario granular_column() {
   s.cell_size = 0.2 / std::sqrt(3200.0);
   s.domain_min = {0, 0};
   s.domain_max = {1.0, 0.45};
-  s.boundaries = {sim::BoundaryKind::Fixed, sim::BoundaryKind::Fixed, sim::BoundaryKind::Fixed,
-                  sim::BoundaryKind::Free};
+  const sim::Wall fixed{sim::BoundaryKind::Fixed, 0.0}, free{sim::BoundaryKind::Free, 0.0};
+  s.boundaries = {fixed, fixed, fixed, free};
   sim::MaterialSpec m;
   m.name = "sand";
   m.model = sim::MaterialModel::MohrCoulomb;
@@ -85,7 +85,8 @@ double vector_bytes(const sim::World& w, double* grid) {
   const sim::Grid& g = w.grid;
   double nodes = bytes(g.points) + bytes(g.fix_x) + bytes(g.fix_y) + bytes(g.row_sums);
   for (const auto* v : {&g.mass, &g.px, &g.py, &g.vx, &g.vy, &g.fx, &g.fy, &g.ax, &g.ay,
-                        &g.held_ax, &g.held_ay})
+                        &g.held_ax, &g.held_ay, &g.wall_gap_x, &g.wall_gap_y, &g.wall_impulse_x,
+                        &g.wall_impulse_y})
     nodes += bytes(*v);
   const double scratch = bytes(w.stencils) + bytes(w.bin_key) + bytes(w.order) +
                          bytes(w.band_start) + bytes(w.thread_counts) + bytes(w.thread_window) + bytes(w.thread_totals) +

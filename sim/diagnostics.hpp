@@ -12,7 +12,8 @@
 namespace sim {
 
 // Energy of Eq. (3) over a stage, J per metre of thickness. The balance:
-// external_work = kinetic_change + internal_work + damping_loss + wall_loss + transfer_loss,
+// external_work = kinetic_change + internal_work + damping_loss + wall_loss + friction_work
+//                 + transfer_loss,
 // where the internal (stress) work splits into elastic_energy_change + plastic_dissipation.
 struct EnergyBalance {
   double external_work = 0;          // by gravity
@@ -21,9 +22,10 @@ struct EnergyBalance {
   double elastic_energy_change = 0;  // stored strain energy, end minus start
   double plastic_dissipation = 0;    // internal_work - elastic_energy_change
   double damping_loss = 0;           // taken by v := v / (1 + theta)
-  double wall_loss = 0;              // taken by no-slip and roller walls (inelastic contact)
+  double wall_loss = 0;              // taken by the walls' holds and contact (inelastic)
+  double friction_work = 0;          // taken by the friction of friction walls
   double transfer_loss = 0;          // lost by the point-grid transfers (StepReport::transfer_loss)
-  double relative_error = 0;  // (external - kinetic - internal - damping - wall - transfer) / |external|
+  double relative_error = 0;  // what the terms above leave of external_work, / |external_work|
 };
 
 struct MaterialMotion {

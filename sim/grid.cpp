@@ -6,11 +6,12 @@ namespace sim {
 
 namespace {
 
-// Whether a wall of this kind holds the velocity component normal to it (n)
-// and the one along it (t).
-void wall_holds(BoundaryKind kind, bool& normal, bool& tangential) {
-  normal = kind != BoundaryKind::Free;
-  tangential = kind == BoundaryKind::Fixed;
+// Whether a wall holds the velocity component normal to it (normal) and the
+// one along it (tangential). A friction wall holds neither outright: its
+// contact acts on the momentum each step (sim/wall_friction.cpp).
+void wall_holds(const Wall& wall, bool& normal, bool& tangential) {
+  normal = wall.kind == BoundaryKind::Fixed || wall.kind == BoundaryKind::Roller;
+  tangential = wall.kind == BoundaryKind::Fixed;
 }
 
 // Cells needed to cover a length; a length that is a whole number of cells up
@@ -68,6 +69,23 @@ Grid make_grid(const Scenario& s) {
         g.fix_x[k] |= tangential;
       }
     }
+  }
+  const Wall* sides[4] = {&s.boundaries.left, &s.boundaries.right, &s.boundaries.bottom,
+                         &s.boundaries.top};
+  const FrictionWall lines[4] = {{0, -1.0, 0, 0, left + 1, g.origin_x + left * g.h},
+                                 {0, +1.0, 0, right, g.nx, g.origin_x + right * g.h},
+                                 {1, -1.0, 0, 0, bottom + 1, g.origin_y + bottom * g.h},
+                                 {1, +1.0, 0, top, g.ny, g.origin_y + top * g.h}};
+  for (int k = 0; k < 4; ++k) {
+    if (sides[k]->kind != BoundaryKind::Friction) continue;
+    g.friction_walls.push_back(lines[k]);
+    g.friction_walls.back().mu = sides[k]->friction;
+  }
+  if (!g.friction_walls.empty()) {
+    g.wall_gap_x.assign(n, 0.0);
+    g.wall_gap_y.assign(n, 0.0);
+    g.wall_impulse_x.assign(n, 0.0);
+    g.wall_impulse_y.assign(n, 0.0);
   }
   return g;
 }

@@ -11,6 +11,20 @@
 
 namespace sim {
 
+// A Coulomb friction wall (sim/wall_friction.hpp): the node lines it acts on,
+// the wall's line and the padding beyond it, [first, last) along `axis`
+// (0: a left or right wall, lines of constant i; 1: bottom or top, constant
+// j). `into` is +1 where a positive velocity component along `axis` moves
+// into the wall (right, top), -1 where a negative one does (left, bottom).
+// `line` is the wall's coordinate along `axis`.
+struct FrictionWall {
+  int axis = 0;
+  double into = 0;
+  double mu = 0;
+  int first = 0, last = 0;
+  double line = 0;
+};
+
 struct Grid {
   double origin_x = 0, origin_y = 0;  // position of node (0, 0)
   double h = 0;                       // cell size
@@ -28,12 +42,22 @@ struct Grid {
   std::vector<double> points;
   // Velocity components held at zero by the walls (1 = fixed).
   std::vector<std::uint8_t> fix_x, fix_y;
+  // Walls with Coulomb friction; empty in a scene without them, which then
+  // pays nothing for them.
+  std::vector<FrictionWall> friction_walls;
+  // With friction walls only: per node, the smallest gap between a side or
+  // wall line and the edge of a point's domain that weights the node, along
+  // x (left and right walls) and y (bottom and top); see wall_friction.hpp.
+  std::vector<double> wall_gap_x, wall_gap_y;
+  std::vector<double> wall_impulse_x, wall_impulse_y;
 
   // Nodes that particles touched this step: [i_begin, i_end) x [j_begin, j_end).
   // Every nodal loop runs over this window only, so empty air costs nothing.
   int i_begin = 0, i_end = 0, j_begin = 0, j_end = 0;
 
-  std::vector<double> row_sums;  // per-row partial sums, added in a fixed order
+  // Per-row partial sums of what the walls take, row_sums[row * kRowSums +
+  // which], added row by row in a fixed order.
+  std::vector<double> row_sums;
 
   // Nodes per row in memory: nx and one spare node that no point weights.
   // A stencil row is read and written as four nodes (Lane4, gimp.hpp); the
@@ -43,6 +67,12 @@ struct Grid {
 
   int node(int i, int j) const { return j * stride + i; }
 };
+
+// What row_sums holds for each row of the window (the StepReport fields of
+// similar names): the kinetic energy the walls' holds take from the grid, the
+// part friction takes, and sum_i m_i |dv_i|^2 / 2 of the velocity change the
+// walls make (for the transfer loss).
+enum RowSum : int { kRowWallLoss, kRowFrictionWork, kRowWallChangeOnGrid, kRowSums };
 
 // Builds the grid for a scenario: walls on the domain lines (the right and top
 // walls on the first grid line at or beyond domain.max), boundary flags per

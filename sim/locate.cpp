@@ -151,7 +151,7 @@ void finish_bands(World& w, int threads) {
   for (int b = filled; b <= bands; ++b) w.band_start[b] = static_cast<int>(w.points.size());
   partition_bands(w, threads);
   w.band_sums.assign(static_cast<std::size_t>(bands) * kBandSums, 0.0);
-  w.grid.row_sums.assign(static_cast<std::size_t>(g.j_end - g.j_begin), 0.0);
+  w.grid.row_sums.assign(static_cast<std::size_t>(g.j_end - g.j_begin) * kRowSums, 0.0);
 }
 
 }  // namespace

@@ -166,14 +166,31 @@ void parse_bodies(const Node& node, Scenario& s) {
   }
 }
 
+// A wall is a kind by name, or {"friction": mu}: a Coulomb friction wall.
+Wall parse_wall(const Node& node) {
+  Wall w;
+  if (node.value.is_object()) {
+    require_object(node, {"friction"}, "a friction wall");
+    w.kind = BoundaryKind::Friction;
+    w.friction = non_negative(required(node, "friction", "the Coulomb coefficient mu"));
+    return w;
+  }
+  const std::string kind = node.value.is_string() ? node.value.get<std::string>() : "";
+  if (kind == "fixed") w.kind = BoundaryKind::Fixed;
+  else if (kind == "roller") w.kind = BoundaryKind::Roller;
+  else if (kind == "free") w.kind = BoundaryKind::Free;
+  else fail(node, "one of \"fixed\", \"roller\", \"free\", or {\"friction\": mu} with mu >= 0");
+  return w;
+}
+
 Boundaries parse_boundaries(const Node& node) {
   require_object(node, {"left", "right", "bottom", "top"});
-  auto side = [&](const char* key) {
-    const std::string kind = one_of(required(node, key), {"fixed", "roller", "free"});
-    return kind == "fixed" ? BoundaryKind::Fixed
-                           : kind == "roller" ? BoundaryKind::Roller : BoundaryKind::Free;
-  };
-  return Boundaries{side("left"), side("right"), side("bottom"), side("top")};
+  Boundaries b;
+  b.left = parse_wall(required(node, "left"));
+  b.right = parse_wall(required(node, "right"));
+  b.bottom = parse_wall(required(node, "bottom"));
+  b.top = parse_wall(required(node, "top"));
+  return b;
 }
 
 TimeStepSpec parse_time_step(const Node& node) {

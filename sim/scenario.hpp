@@ -36,10 +36,17 @@ struct BodySpec {
   std::vector<Vec2> polygon;
 };
 
-enum class BoundaryKind { Fixed, Roller, Free };
+// What a wall holds: both velocity components (fixed, no slip), the one
+// normal to it (roller), nothing (free), or Coulomb friction: no velocity
+// into the wall, separation allowed, sliding resisted by friction * the
+// normal impulse (sim/wall_friction.hpp).
+enum class BoundaryKind { Fixed, Roller, Free, Friction };
+struct Wall {
+  BoundaryKind kind = BoundaryKind::Free;
+  double friction = 0;  // Coulomb coefficient mu of a Friction wall, >= 0
+};
 struct Boundaries {
-  BoundaryKind left = BoundaryKind::Free, right = BoundaryKind::Free,
-               bottom = BoundaryKind::Free, top = BoundaryKind::Free;
+  Wall left, right, bottom, top;
 };
 
 struct TimeStepSpec {

@@ -104,7 +104,7 @@ void Simulation::close_energy_balance(StageResult& r, double kinetic_start,
   e.elastic_energy_change = elastic_energy(world_) - elastic_start;
   e.plastic_dissipation = e.internal_work - e.elastic_energy_change;
   const double residual = e.external_work - e.kinetic_change - e.internal_work - e.damping_loss -
-                         e.wall_loss - e.transfer_loss;
+                         e.wall_loss - e.friction_work - e.transfer_loss;
   e.relative_error = e.external_work != 0 ? residual / std::fabs(e.external_work) : 0.0;
 }
 
@@ -192,6 +192,7 @@ void Simulation::run_timed_stage(const StageSpec& stage, Observer& observer) {
     r.energy.internal_work += report.internal_work;
     r.energy.damping_loss += report.damping_loss;
     r.energy.wall_loss += report.wall_loss;
+    r.energy.friction_work += report.friction_work;
     r.energy.transfer_loss += report.transfer_loss;
     r.kinetic_energy = report.kinetic_energy;
     r.moving_kinetic_energy = report.moving_kinetic_energy;

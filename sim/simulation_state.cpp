@@ -15,7 +15,7 @@ namespace {
 
 // "LSSTATE" and a format version; bump the version whenever the layout below
 // changes, so an old file is refused rather than misread.
-constexpr std::uint64_t kMagic = 0x4c53535441544501ULL;
+constexpr std::uint64_t kMagic = 0x4c53535441544502ULL;
 // Read back as another number on a machine of the other byte order.
 constexpr std::uint64_t kByteOrder = 0x0102030405060708ULL;
 
@@ -111,7 +111,11 @@ std::uint64_t stage_prefix_key(const Scenario& s, std::size_t stages) {
     w.put(v);
   w.put(s.padding_cells);
   w.put(s.points_per_cell);
-  w.put(s.boundaries);
+  for (const Wall& wall : {s.boundaries.left, s.boundaries.right, s.boundaries.bottom,
+                          s.boundaries.top}) {
+    w.put(wall.kind);
+    w.put(wall.friction);
+  }
   w.put(s.time_step.mode);
   for (const MaterialSpec& m : s.materials) put_material(w, m);
   for (const BodySpec& b : s.bodies) {

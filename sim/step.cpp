@@ -8,6 +8,7 @@
 #include <algorithm>
 
 #include "sim/bands.hpp"
+#include "sim/wall_friction.hpp"
 
 namespace sim {
 
@@ -45,6 +46,7 @@ void reset_grid(World& w) {
       g.points[k] = 0.0;
     }
   }
+  if (!g.friction_walls.empty()) reset_wall_gaps(g, first, last);
 }
 
 void points_to_grid(World& w) {
@@ -64,6 +66,7 @@ void points_to_grid(World& w) {
         store4(&g.points[row], load4(&g.points[row]) + (S > 0.0 ? kOnes : Lane4{}));
       }
     }
+    if (!g.friction_walls.empty()) scatter_wall_gaps(w, band);
   });
 }
 
@@ -73,7 +76,7 @@ void points_to_grid(World& w) {
 // with the step's acceleration: with the incremental update of Eq. (30) a
 // point would otherwise keep the speed a no-slip wall stopped, and a deposit
 // against a wall would never come to rest. The kinetic energy taken goes to
-// row_sums, row by row.
+// row_sums, row by row. Friction walls act after the holds.
 void enforce_walls_on_momentum(World& w) {
   Grid& g = w.grid;
   int first, last;
@@ -91,11 +94,16 @@ void enforce_walls_on_momentum(World& w) {
       g.vx[k] = g.px[k] * inv;
       g.vy[k] = g.py[k] * inv;
     }
-    g.row_sums[j - g.j_begin] = removed;
+    // A held component's change is all it had: the grid loses what it takes.
+    double* sums = &g.row_sums[(j - g.j_begin) * kRowSums];
+    sums[kRowWallLoss] = removed;
+    sums[kRowWallChangeOnGrid] = removed;
   }
+  if (!g.friction_walls.empty()) friction_walls_on_momentum(g, first, last);
 }
 
-// Eq. (28): p_i^{k+1} = p_i^k + dt f_i. Walls take the force normal to them.
+// Eq. (28): p_i^{k+1} = p_i^k + dt f_i. Walls take the force normal to them;
+// friction walls then act on p_i^{k+1}.
 // The nodal acceleration handed to the points (Eq. 30) is the whole velocity
 // change of the step: force plus what the wall took away.
 void update_nodal_momentum(World& w, double dt) {
@@ -119,12 +127,19 @@ void update_nodal_momentum(World& w, double dt) {
       g.vy[k] = g.py[k] * inv;
     }
   }
+  if (!g.friction_walls.empty()) friction_walls_on_update(g, first, last, dt);
 }
 
 // The step's sums, band by band (row by row for the walls) in a fixed order.
 StepReport sum_step_report(const World& w) {
   StepReport r;
-  for (const double row : w.grid.row_sums) r.wall_loss += row;
+  double wall_change_on_grid = 0;
+  for (std::size_t row = 0; row < w.grid.row_sums.size(); row += kRowSums) {
+    const double* sums = &w.grid.row_sums[row];
+    r.wall_loss += sums[kRowWallLoss];
+    r.friction_work += sums[kRowFrictionWork];
+    wall_change_on_grid += sums[kRowWallChangeOnGrid];
+  }
   for (std::size_t b = 0; b + 1 < w.band_start.size(); ++b) {
     const double* sums = &w.band_sums[b * kBandSums];
     r.internal_work += sums[kInternalWork];
@@ -135,7 +150,7 @@ StepReport sum_step_report(const World& w) {
     r.max_signal = std::max(r.max_signal, sums[kMaxSignal]);
     r.wall_change_on_points += sums[kWallChangeOnPoints];
   }
-  r.transfer_loss = r.wall_loss - r.wall_change_on_points;
+  r.transfer_loss = wall_change_on_grid - r.wall_change_on_points;
   return r;
 }
 

@@ -23,17 +23,23 @@ struct StepReport {
   double moving_kinetic_energy = 0;
   double internal_work = 0;   // sum_p V_p sigma : d eps over the step (Eq. 3), J/m
   double damping_loss = 0;    // kinetic energy the damping took, J/m
-  double wall_loss = 0;       // kinetic energy the walls took from the grid, J/m
-  // The velocity change dv_i the walls make (held components) as the points
-  // receive it through Eq. (30): sum_p m_p |sum_i S_ip dv_i|^2 / 2, J/m.
+  // Kinetic energy the walls took from the grid, J/m: all of it at fixed and
+  // roller walls, the normal part at friction walls.
+  double wall_loss = 0;
+  // Kinetic energy friction walls took from the grid through the tangential
+  // impulse: the work of friction, J/m (sim/wall_friction.hpp).
+  double friction_work = 0;
+  // The velocity change dv_i the walls make as the points receive it through
+  // Eq. (30): sum_p m_p |sum_i S_ip dv_i|^2 / 2, J/m.
   double wall_change_on_points = 0;
   // Kinetic energy the grid-to-point transfer of the walls' change dissipates
-  // beyond wall_loss, J/m. The points keep their own velocity and add the
-  // interpolated change, so they lose sum_i p_i . dv_i (= 2 wall_loss) minus
-  // wall_change_on_points, while the grid loses wall_loss = sum_i m_i
-  // |dv_i|^2 / 2: transfer_loss = wall_loss - wall_change_on_points, >= 0 by
-  // Jensen's inequality. Measured on the grid and the stencils, not taken as
-  // what closes the balance of Eq. (3).
+  // beyond what the walls took, J/m. The points keep their own velocity and
+  // add the interpolated change, so where the grid loses sum_i m_i |dv_i|^2 / 2
+  // (at a hold: all of p_i, so the grid's loss is also wall_loss) the points
+  // lose sum_i p_i . dv_i minus wall_change_on_points: transfer_loss = sum_i
+  // m_i |dv_i|^2 / 2 - wall_change_on_points, >= 0 by Jensen's inequality.
+  // Measured on the grid and the stencils, not taken as what closes the
+  // balance of Eq. (3).
   double transfer_loss = 0;
   double max_signal = 0;      // max_p (c_p + |v_p|), m/s, for the next stable step
 };

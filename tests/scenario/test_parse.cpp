@@ -32,10 +32,22 @@ TEST(ScenarioParse, TopLevelDomainGridGravityBoundaries) {
   EXPECT_EQ(s.padding_cells, 3);
   EXPECT_EQ(s.points_per_cell, 2);
   EXPECT_EQ(s.gravity, (Vec2{0.5, -9.81}));
-  EXPECT_EQ(s.boundaries.left, sim::BoundaryKind::Roller);
-  EXPECT_EQ(s.boundaries.right, sim::BoundaryKind::Free);
-  EXPECT_EQ(s.boundaries.bottom, sim::BoundaryKind::Fixed);
-  EXPECT_EQ(s.boundaries.top, sim::BoundaryKind::Free);
+  EXPECT_EQ(s.boundaries.left.kind, sim::BoundaryKind::Roller);
+  EXPECT_EQ(s.boundaries.right.kind, sim::BoundaryKind::Free);
+  EXPECT_EQ(s.boundaries.bottom.kind, sim::BoundaryKind::Fixed);
+  EXPECT_EQ(s.boundaries.top.kind, sim::BoundaryKind::Free);
+}
+
+TEST(ScenarioParse, FrictionWallKeepsItsCoefficient) {
+  nlohmann::json doc = nlohmann::json::parse(kExample);
+  doc["boundaries"]["bottom"] = {{"friction", 0.35}};
+  doc["boundaries"]["right"] = {{"friction", 0}};
+  const sim::Scenario s = parse(doc);
+  EXPECT_EQ(s.boundaries.bottom.kind, sim::BoundaryKind::Friction);
+  EXPECT_EQ(s.boundaries.bottom.friction, 0.35);
+  EXPECT_EQ(s.boundaries.right.kind, sim::BoundaryKind::Friction);
+  EXPECT_EQ(s.boundaries.right.friction, 0.0);
+  EXPECT_EQ(s.boundaries.left.kind, sim::BoundaryKind::Roller);
 }
 
 TEST(ScenarioParse, MaterialsInKeyOrderWithAnglesInRadians) {

@@ -72,7 +72,7 @@ TEST(Transfer, WallTransferLossClosesTheKineticEnergyOfAStoppedStep) {
   // takes. The grid loses wall_loss; the points, which take the interpolated
   // change (Eq. 30), lose wall_loss + transfer_loss, transfer_loss > 0.
   sim::Scenario s = simtest::block_scenario({1.0, 0.0}, {2.0, 1.0}, 0.25, 2, {0, 0}, {4, 3});
-  s.boundaries.bottom = sim::BoundaryKind::Fixed;
+  s.boundaries.bottom = {sim::BoundaryKind::Fixed, 0.0};
   s.materials[0].youngs_modulus = 1e-3;  // forces negligible next to the wall's change
   sim::World w = sim::make_world(s);
   for (std::size_t p = 0; p < w.points.size(); ++p) {

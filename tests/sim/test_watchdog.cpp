@@ -31,7 +31,7 @@ class Injector : public sim::Observer {
 sim::Scenario settling_block() {
   sim::Scenario s = simtest::block_scenario({1, 0}, {3, 1}, 0.25, 2, {0, 0}, {4, 3});
   s.gravity = {0, -9.81};
-  s.boundaries.bottom = sim::BoundaryKind::Fixed;
+  s.boundaries.bottom = {sim::BoundaryKind::Fixed, 0.0};
   sim::StageSpec settle;
   settle.name = "settle";
   settle.type = sim::StageType::Dynamic;
