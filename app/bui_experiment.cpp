@@ -104,38 +104,6 @@ double surface_height(const sim::Particles& p, double x, double half_width) {
   return top;
 }
 
-Curve deposit_thickness(const sim::Particles& p, double half_width, double step) {
-  // Each point's area is spread evenly over its square [x_p - a_p, x_p + a_p]
-  // (a block of points then has its exact thickness wherever the window
-  // falls); the points are sorted by x so that each window visits only the
-  // points that can reach it.
-  std::vector<std::size_t> order(p.size());
-  std::iota(order.begin(), order.end(), 0);
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return p.x[a] < p.x[b]; });
-  std::vector<double> xs, half;
-  double reach = 0;  // the largest half side
-  for (const std::size_t i : order) {
-    xs.push_back(p.x[i]);
-    half.push_back(half_side(p, i));
-    reach = std::max(reach, half.back());
-  }
-  Curve c;
-  const double end = (xs.empty() ? 0.0 : xs.back()) + reach + half_width + step;
-  for (long k = 0; static_cast<double>(k) * step <= end; ++k) {
-    const double x = static_cast<double>(k) * step;
-    const double lo = std::max(0.0, x - half_width), hi = x + half_width;
-    double area = 0;
-    for (auto j = static_cast<std::size_t>(std::lower_bound(xs.begin(), xs.end(), lo - reach) - xs.begin());
-         j < xs.size() && xs[j] <= hi + reach; ++j) {
-      const double overlap = std::min(hi, xs[j] + half[j]) - std::max(lo, xs[j] - half[j]);
-      if (overlap > 0) area += 2.0 * half[j] * overlap;  // side 2a times the overlap
-    }
-    c.x.push_back(x);
-    c.y.push_back(area / (hi - lo));
-  }
-  return c;
-}
-
 Marks unmoved_boundary(const sim::Particles& p, double spacing, double y_low, double y_high,
                        double moved) {
   // Row r holds the points with r*spacing <= y0 < (r+1)*spacing; per row, the

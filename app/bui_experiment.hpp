@@ -35,14 +35,6 @@ double curve_toe(const Curve& surface, double min_height);
 // it); 0 where there is none.
 double surface_height(const sim::Particles& p, double x, double half_width);
 
-// The simulation's deposit thickness along x: the area of the points (their
-// volume per unit thickness, m_p / rho_p, spread over their squares) within
-// half_width of x, divided by the part of that window on the floor (x >= 0),
-// sampled every `step` from the wall to past the last point. For a dense
-// deposit it is the height of the free surface; a tail of scattered points
-// counts by the material it holds, not by the height of its highest point.
-Curve deposit_thickness(const sim::Particles& p, double half_width, double step);
-
 // Points on a failure line.
 struct Marks {
   std::vector<double> x, y;

@@ -39,10 +39,11 @@ nlohmann::json metrics_json(const sim::StageMetrics& m) {
   nlohmann::json slope = nullptr;  // JSON has no NaN
   if (std::isfinite(m.deposit_slope_deg)) slope = m.deposit_slope_deg;
   return {{"max_soil_horizontal_displacement_m", m.max_soil_ux},
-          {"initial_front_x_m", m.initial_front},
-          {"front_x_m", m.front},
+          {"initial_toe_x_m", m.initial_toe},
+          {"toe_x_m", m.toe},
           {"runout_m", m.runout},
           {"main_body_fraction", m.main_body_fraction},
+          {"packed_fraction", m.packed_fraction},
           {"yielding_fraction", m.yielding_fraction},
           {"deposit_slope_deg", slope},
           {"materials", materials}};

@@ -63,7 +63,8 @@ int validate_command(const ValidateOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   std::vector<ValidationRow> rows;
   try {
-    for (auto* run_case : {&elastic_column_case, &bui_column_case, &paper_slope_energy_case}) {
+    for (auto* run_case :
+         {&elastic_column_case, &bui_column_case, &column_collapse_case, &paper_slope_case}) {
       const std::vector<ValidationRow> part = run_case(suite);
       rows.insert(rows.end(), part.begin(), part.end());
     }

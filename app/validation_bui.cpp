@@ -13,35 +13,39 @@
 #include "app/bui_experiment.hpp"
 #include "app/validation_cases.hpp"
 #include "app/validation_util.hpp"
+#include "sim/runout.hpp"
 
 namespace app {
 
 namespace {
 
-// The toe is where the deposit becomes thinner than 1.5 mm: the lowest height
-// of the digitised surface (its last point stands 1.52 mm high at
-// x = 0.442 m), so the experiment's toe is defined by its own data, and about
-// the rods' size (HydraxMPM's mu(I) model of this column, examples/iacmag_2025/
-// mpm_collapse.py, takes a grain diameter of 1.25 mm). The experiment's
-// deposit is a dense pack of rods, so its surface height is its thickness; the
-// simulation's thickness is the points' area per unit length over a window of
-// one cell (deposit_thickness), and both toes are found by the same walk from
-// the wall (curve_toe).
-constexpr double kToeHeight = 0.0015;
+// The toe is where the deposit becomes thinner than 1.5 mm: the simulation's
+// is the runout's toe (sim/runout.hpp, 1.5 % of the column's 100 mm), and
+// 1.5 mm is the lowest height of the digitised surface (its last point stands
+// 1.52 mm high at x = 0.442 m), so the experiment's toe is defined by its own
+// data, and about the rods' size (HydraxMPM's mu(I) model of this column,
+// examples/iacmag_2025/mpm_collapse.py, takes a grain diameter of 1.25 mm).
+// The experiment's deposit is a dense pack of rods, so its surface height is
+// its thickness.
+constexpr double kToeHeight = sim::kToeThicknessFraction * 0.1;
 // A point "moved" when its horizontal displacement exceeds 1 mm: the
 // threshold Huo et al. (2025, LandslideSIM/Archive_MaterialPointSolver.jl_paper
 // 02_soil_collapse/post_process.jl) and HydraxMPM (examples/iacmag_2025/
 // mpm_collapse_plotval.py) use to draw their simulations against this failure
 // line. The previous measure's 5 mm (5 % of the height) is reported beside it.
 constexpr double kMoved = 0.001, kMovedCoarse = 0.005;
-// Issue 8: the toe within 10 % of the experiment at the scene's resolution.
-constexpr double kToeTolerance = 0.10;
+// Issue 13: on the friction base the toe within 5 % of the experiment at
+// h = 5, 2.5 and 1.25 mm (3 % is the goal, reported), and a change of under
+// 3 % from 2.5 to 1.25 mm. Issue 8: on the scene's no-slip base, within 10 %
+// at its own 2.5 mm.
+constexpr double kToeTolerance = 0.05, kToeChange = 0.03, kSceneToeTolerance = 0.10;
+// The friction base: no source found states the friction between the rods
+// and the floor (tests/validation/README.md), so the base is taken as rough
+// as the rods themselves, mu = tan 19.8 deg.
+constexpr double kBaseFriction = 0.36;
 // The wall height: within 5 % of the experiment (as against the initial 0.1 m
 // before the experiment's data were found).
 constexpr double kWallTolerance = 0.05;
-// The smooth-base runs get a longer domain so that the spreading is not
-// stopped by the scene's far wall at 0.6 m.
-constexpr double kRollerDomainLength = 1.5;
 
 struct Experiment {
   Curve surface, failure;
@@ -61,10 +65,11 @@ Experiment read_experiment(const std::string& scenarios) {
   return e;
 }
 
-// The final state of one run against the experiment. `checked`: this is the
-// scene's own resolution, where issue 8 sets the 10 % limit on the toe.
+// The final state of one run against the experiment, the toe checked within
+// `toe_tolerance` (< 0: reported).
 std::vector<ValidationRow> experiment_rows(const std::string& name, const sim::Scenario& s,
-                                           const Run& run, const Experiment& e, bool checked) {
+                                           const Run& run, const Experiment& e,
+                                           double toe_tolerance) {
   const sim::Particles& p = run.simulation->world().points;
   const double spacing = s.cell_size / s.points_per_cell;
   double height = 0, length = 0;  // of the initial column
@@ -74,11 +79,10 @@ std::vector<ValidationRow> experiment_rows(const std::string& name, const sim::S
   }
   const std::string from_surface = "%.4g (" + e.surface_file + ")";
   std::vector<ValidationRow> rows;
-  // A window of one cell: narrower, it would see the gaps between points.
-  const double toe = curve_toe(deposit_thickness(p, 0.5 * s.cell_size, 0.25 * spacing), kToeHeight);
-  rows.push_back(compared(name, "toe from the wall, deposit >= 1.5 mm [m]", toe, e.toe,
-                          checked ? kToeTolerance : -1, from_surface.c_str()));
-  rows.push_back(compared(name, "runout beyond the initial toe [m]", toe - length, e.toe - length,
+  const sim::StageMetrics& m = run.simulation->results().back().metrics;
+  rows.push_back(compared(name, "toe from the wall, deposit >= 1.5 mm [m]", m.toe, e.toe,
+                          toe_tolerance, from_surface.c_str()));
+  rows.push_back(compared(name, "runout beyond the initial toe [m]", m.runout, e.toe - length,
                           -1, from_surface.c_str()));
   rows.push_back(compared(name, "height at the wall [m]", surface_height(p, 0.0, s.cell_size),
                           e.wall_height, kWallTolerance, from_surface.c_str()));
@@ -121,56 +125,42 @@ std::string run_name(const std::string& base, double h, const Run& run) {
 
 }  // namespace
 
-// The scene on its no-slip (fixed) base at h = 10, 5 and 2.5 mm (the scene's
-// own; --quick: 10 mm only; --finest adds 1.25 mm, about 8 times the 2.5 mm
-// run's time), each against the experiment, and the toe against the finest
-// run (discretisation); then the full suite runs the same column on a smooth
-// (roller) base at 10 and 5 mm in a 1.5 m long domain.
+// The scene on its no-slip (fixed) base, the base of the reproductions of
+// Huo et al. (2025) and HydraxMPM, at h = 10, 5 and 2.5 mm (the scene's own;
+// --quick: 10 mm only), then on a friction base at the same and, with
+// --finest, at 1.25 mm (about 8 times the 2.5 mm run's time); each against
+// the experiment, and the toe's change from one resolution to the next.
 std::vector<ValidationRow> bui_column_case(const ValidationSuite& suite) {
-  const sim::Scenario base =
+  const sim::Scenario scene =
       sim::load_scenario(suite.scenarios + "/validation/bui2008-column.json");
   const Experiment experiment = read_experiment(suite.scenarios);
-  std::vector<double> sizes = suite.quick ? std::vector<double>{0.01}
-                                          : std::vector<double>{0.01, 0.005, 0.0025};
-  if (suite.finest && !suite.quick) sizes.push_back(0.00125);
-  if (!suite.quick && std::find(sizes.begin(), sizes.end(), base.cell_size) == sizes.end()) {
-    sizes.push_back(base.cell_size);
-    std::sort(sizes.rbegin(), sizes.rend());
-  }
   std::vector<ValidationRow> rows;
-  std::vector<double> toes;
-  for (const double h : sizes) {
-    sim::Scenario s = base;
-    s.cell_size = h;
-    const Run run = run_with_progress(s);
-    const std::string name = run_name("Bui column", h, run);
-    const std::vector<ValidationRow> part =
-        experiment_rows(name, s, run, experiment, h == base.cell_size);
-    toes.push_back(part.front().value);
-    rows.insert(rows.end(), part.begin(), part.end());
-    for (const ValidationRow& r : run_rows(name, run, true)) rows.push_back(r);
-  }
-  for (std::size_t k = 0; k + 1 < toes.size(); ++k)
-    rows.push_back(compared("Bui column h = " + fmt("%g", sizes[k] * 1000) + " mm",
-                            "toe vs the finest run", toes[k], toes.back(), -1, "%.4f m"));
-  if (suite.quick) return rows;
-  for (const double h : {0.01, 0.005}) {
-    sim::Scenario s = base;
-    s.cell_size = h;
-    s.boundaries.bottom = {sim::BoundaryKind::Roller, 0.0};
-    s.domain_max[0] = kRollerDomainLength;
-    const Run run = run_with_progress(s);
-    const std::string name = run_name("Bui column, roller base, 1.5 m domain,", h, run);
-    // The material leaves the wall, so the walk from the wall that defines the
-    // toe finds nothing: the front of the main body (sim::StageMetrics, plus
-    // half a point spacing) stands for it.
-    const sim::StageMetrics& m = run.simulation->results().back().metrics;
-    rows.push_back(compared(name, "front of the main body [m]", m.front + 0.5 * h / s.points_per_cell,
-                            experiment.toe, -1, ("%.4g (toe, " + experiment.surface_file + ")").c_str()));
-    rows.push_back(compared(name, "height at the wall [m]",
-                            surface_height(run.simulation->world().points, 0.0, h),
-                            experiment.wall_height, -1, "%.4g"));
-    for (const ValidationRow& r : run_rows(name, run, false)) rows.push_back(r);
+  for (const bool friction : {false, true}) {
+    if (friction && suite.quick) break;
+    std::vector<double> sizes = suite.quick ? std::vector<double>{0.01}
+                                            : std::vector<double>{0.01, 0.005, 0.0025};
+    if (friction && suite.finest) sizes.push_back(0.00125);
+    sim::Scenario base = scene;
+    if (friction) base.boundaries.bottom = {sim::BoundaryKind::Friction, kBaseFriction};
+    const std::string label =
+        friction ? "Bui column, friction base mu = " + fmt("%g", kBaseFriction) + "," : "Bui column";
+    std::vector<double> toes;
+    for (const double h : sizes) {
+      sim::Scenario s = base;
+      s.cell_size = h;
+      const Run run = run_with_progress(s);
+      const std::string name = run_name(label, h, run);
+      const double tolerance = friction ? (h <= 0.005 ? kToeTolerance : -1)
+                                        : (h == scene.cell_size ? kSceneToeTolerance : -1);
+      const std::vector<ValidationRow> part = experiment_rows(name, s, run, experiment, tolerance);
+      toes.push_back(part.front().value);
+      rows.insert(rows.end(), part.begin(), part.end());
+      for (const ValidationRow& r : run_rows(name, run, true)) rows.push_back(r);
+    }
+    const bool finest = friction && suite.finest;
+    for (const ValidationRow& r : change_rows(label, "toe change", sizes, 1000, "mm", toes, false,
+                                              finest ? kToeChange : -1))
+      rows.push_back(r);
   }
   return rows;
 }

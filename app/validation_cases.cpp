@@ -95,6 +95,35 @@ std::vector<ValidationRow> energy_rows(const std::string& case_name, const Run& 
   return rows;
 }
 
+std::vector<ValidationRow> change_rows(const std::string& name, const std::string& measure,
+                                       const std::vector<double>& cells, double scale,
+                                       const char* unit, const std::vector<double>& values,
+                                       bool shrinking, double last_tolerance) {
+  std::vector<ValidationRow> rows;
+  double before = -1;
+  for (std::size_t k = 1; k < values.size(); ++k) {
+    const double change = std::fabs(values[k] - values[k - 1]) / std::fabs(values[k]);
+    ValidationRow r = row(name, measure + ", h = " + fmt("%g", cells[k - 1] * scale) + " -> " +
+                                    fmt("%g", cells[k] * scale) + " " + unit,
+                          change, "relative to the finer run");
+    if (shrinking && before >= 0) {
+      r.at_most = true;
+      r.tolerance = before;
+      r.reference += "; below the change before";
+    }
+    rows.push_back(r);
+    if (last_tolerance >= 0 && k + 1 == values.size()) {
+      r.at_most = true;
+      r.tolerance = last_tolerance;
+      r.reference = "relative to the finer run; the finest change below " +
+                    fmt("%g", 100 * last_tolerance) + " %";
+      rows.push_back(r);
+    }
+    before = change;
+  }
+  return rows;
+}
+
 namespace {
 
 std::string cells_label(const std::string& base, int cells) {
@@ -144,37 +173,6 @@ std::vector<ValidationRow> elastic_column_case(const ValidationSuite& suite) {
   rows.push_back(order);
   rows.push_back(row(range, "observed order of settlement error",
                      sim::observed_order(h.data(), settlement.data(), h.size()), "-"));
-  return rows;
-}
-
-// The energy balance of the paper's slope at 1648 points (h = 1.127 m), where
-// the point-grid transfers dissipate most (phi = 10 moves furthest). Not one
-// of the validation scenes (scenarios/validation/): an audit of the energy
-// accounting on a violent slide. At the scenes' own Courant number (0.5) the
-// slide's residual is the explicit update's time-step error, which
-// bench/energy_audit splits exactly into its terms and which halves with the
-// step (-3.13 / -0.53 / +0.55 % for phi = 10 at Courant 0.5 / 0.25 / 0.125):
-// there it is reported. The accounting is checked at Courant 0.25.
-std::vector<ValidationRow> paper_slope_energy_case(const ValidationSuite& suite) {
-  std::vector<ValidationRow> rows;
-  if (suite.quick) return rows;  // a few seconds each on an idle 2-core machine
-  for (const int phi : {10, 20}) {
-    sim::Scenario s = sim::load_scenario(suite.scenarios + "/paper-slope-phi" +
-                                         std::to_string(phi) + ".json");
-    s.cell_size = 1.127;
-    s.output.frame_interval = 0;
-    s.output.vtk = "none";
-    const double own_courant = s.time_step.courant;
-    for (const double courant : {own_courant, 0.25}) {
-      s.time_step.courant = courant;
-      const Run run = run_with_progress(s);
-      const std::string name = "paper slope phi = " + std::to_string(phi) + " (" +
-                               std::to_string(run.simulation->world().points.size()) +
-                               " points, Courant " + fmt("%g", courant) + ")";
-      rows.push_back(row(name, "runout [m]", run.simulation->results().back().metrics.runout, "-"));
-      for (const ValidationRow& r : energy_rows(name, run, courant != own_courant)) rows.push_back(r);
-    }
-  }
   return rows;
 }
 

@@ -34,7 +34,7 @@ struct ValidationRow {
 struct ValidationSuite {
   std::string scenarios;  // folder holding validation/ and paper-slope-*.json
   bool quick = false;     // coarse resolutions only, for CI
-  bool finest = false;    // adds the Bui column at h = 1.25 mm (minutes on one thread)
+  bool finest = false;    // adds the finest resolutions (tens of minutes on two threads)
 };
 
 // Largest energy balance error (Eq. 3) of a run's timed stages that a row may show.
@@ -42,6 +42,7 @@ constexpr double kEnergyTolerance = 0.02;
 
 std::vector<ValidationRow> elastic_column_case(const ValidationSuite& suite);
 std::vector<ValidationRow> bui_column_case(const ValidationSuite& suite);
-std::vector<ValidationRow> paper_slope_energy_case(const ValidationSuite& suite);
+std::vector<ValidationRow> paper_slope_case(const ValidationSuite& suite);
+std::vector<ValidationRow> column_collapse_case(const ValidationSuite& suite);
 
 }  // namespace app

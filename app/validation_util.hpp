@@ -39,4 +39,13 @@ ValidationRow compared(const std::string& case_name, const std::string& measure,
 std::vector<ValidationRow> energy_rows(const std::string& case_name, const Run& run,
                                        bool check_dynamic = true);
 
+// The relative change of `values` from one cell size to the next finer one
+// (cells[k] * scale printed with `unit`), one row each: with `shrinking`,
+// each change is checked to be below the one before; the last change is
+// checked below last_tolerance when that is >= 0.
+std::vector<ValidationRow> change_rows(const std::string& name, const std::string& measure,
+                                       const std::vector<double>& cells, double scale,
+                                       const char* unit, const std::vector<double>& values,
+                                       bool shrinking, double last_tolerance);
+
 }  // namespace app

@@ -56,13 +56,11 @@ void audit_step(const sim::World& w, const sim::StepInput& in, const std::vector
   for (std::size_t p = 0; p < pts.size(); ++p) {
     const sim::Stencil& st = w.stencils[p];
     double ax = 0, ay = 0, wx = 0, wy = 0, lxx = 0, lxy = 0, lyx = 0, lyy = 0;
-    bool alone = true;
     for (int b = 0; b < 3; ++b)
       for (int c = 0; c < 3; ++c) {
         const int k = g.node(st.base_i + c, st.base_j + b);
         const double S = st.wx[c] * st.wy[b];
         const double gx = st.dx[c] * st.wy[b], gy = st.wx[c] * st.dy[b];
-        alone &= (S == 0.0) || (g.points[k] == 1);
         ax += S * g.ax[k];
         ay += S * g.ay[k];
         wx += g.fix_x[k] ? S * g.ax[k] : 0.0;
@@ -83,8 +81,8 @@ void audit_step(const sim::World& w, const sim::StepInput& in, const std::vector
     const double on_grid = V1 * (pts.sxx[p] * dxx + pts.syy[p] * dyy + 2 * pts.sxy[p] * dxy);
     const double counted = V0 * 0.5 * ((s0[3 * p] + pts.sxx[p]) * dxx + (s0[3 * p + 1] + pts.syy[p]) * dyy +
                                        2 * (s0[3 * p + 2] + pts.sxy[p]) * dxy);
-    const bool clamped = pts.density[p] <= w.material_specs[pts.material[p]].density / sim::kMaxExpansion;
-    double& q = alone ? t.Q_alone : clamped ? t.Q_clamped : t.Q_rest;
+    const bool disconnected = pts.density[p] < w.materials[pts.material[p]].critical_density;
+    double& q = disconnected ? t.Q_alone : t.Q_rest;
     q += on_grid - counted;
   }
 }

@@ -83,7 +83,7 @@ double vector_bytes(const sim::World& w, double* grid) {
                         &p.szz, &p.x0, &p.y0, &p.ref_x, &p.ref_y})
     points += bytes(*v);
   const sim::Grid& g = w.grid;
-  double nodes = bytes(g.points) + bytes(g.fix_x) + bytes(g.fix_y) + bytes(g.row_sums);
+  double nodes = bytes(g.fix_x) + bytes(g.fix_y) + bytes(g.row_sums);
   for (const auto* v : {&g.mass, &g.px, &g.py, &g.vx, &g.vy, &g.fx, &g.fy, &g.ax, &g.ay,
                         &g.held_ax, &g.held_ay, &g.wall_gap_x, &g.wall_gap_y, &g.wall_impulse_x,
                         &g.wall_impulse_y})

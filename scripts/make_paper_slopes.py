@@ -28,6 +28,11 @@ RESOLUTIONS = {1648: 1.127, 8370: 0.5, 28724: 0.270, 67016: 0.177}
 # share one gravity stage, which `landslide gallery` computes once.
 PHI_BEFORE_TRIGGER = 25
 
+# Below this density the soil is disconnected and carries no stress
+# (Dunatunga & Kamrin 2015, sim/granular.hpp): a reconstruction, 5 % below
+# the density as placed.
+CRITICAL_DENSITY = 2000
+
 
 def scenario(phi, points, name):
     h = RESOLUTIONS[points]
@@ -46,7 +51,7 @@ def scenario(phi, points, name):
         "materials": {
             "soil": {"model": "mohr-coulomb", "density": 2000, "youngs_modulus": 20e6,
                      "poisson_ratio": 0.25, "cohesion": 40e3, "friction_angle": PHI_BEFORE_TRIGGER,
-                     "dilation_angle": min(10, phi)},
+                     "dilation_angle": min(10, phi), "critical_density": CRITICAL_DENSITY},
             "house": {"model": "linear-elastic", "density": 500, "youngs_modulus": 20e6,
                       "poisson_ratio": 0.25},
         },

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "sim/runout.hpp"
+
 namespace sim {
 
 namespace {
@@ -94,7 +96,7 @@ StageMetrics measure_stage(const World& w) {
   StageMetrics m;
   std::size_t soil = 0, main = 0, yielding = 0;
   const std::vector<char> in_main = main_body(w, soil, main);
-  m.initial_front = m.front = std::numeric_limits<double>::lowest();
+  double soil_mass = 0, packed_mass = 0;
   std::vector<double> sum_ux(w.materials.size(), 0), sum_uy(w.materials.size(), 0);
   std::vector<double> max_u(w.materials.size(), 0), count(w.materials.size(), 0);
   for (std::size_t p = 0; p < pts.size(); ++p) {
@@ -106,17 +108,21 @@ StageMetrics measure_stage(const World& w) {
     max_u[mat] = std::max(max_u[mat], std::hypot(ux, uy));
     if (!is_soil(w, p)) continue;
     m.max_soil_ux = std::max(m.max_soil_ux, std::fabs(ux));
-    m.initial_front = std::max(m.initial_front, pts.x0[p]);
-    if (in_main[p]) m.front = std::max(m.front, pts.x[p]);
     yielding += pts.yielded[p];
+    soil_mass += pts.mass[p];
+    const double ratio = pts.density[p] / w.material_specs[mat].density;
+    if (std::fabs(ratio - 1.0) <= kPackedDensityBand) packed_mass += pts.mass[p];
   }
   if (soil > 0) {
-    m.runout = m.front - m.initial_front;
+    const Runout r = measure_runout(w);
+    m.initial_toe = r.initial_toe;
+    m.toe = r.toe;
+    m.runout = r.runout;
+    m.packed_fraction = packed_mass / soil_mass;
     m.main_body_fraction = static_cast<double>(main) / soil;
     m.yielding_fraction = static_cast<double>(yielding) / soil;
     m.deposit_slope_deg = deposit_slope(w, in_main);
   } else {
-    m.initial_front = m.front = 0;
     m.deposit_slope_deg = std::nan("");
   }
   for (std::size_t k = 0; k < w.materials.size(); ++k) {

@@ -34,12 +34,18 @@ struct MaterialMotion {
   double max_displacement = 0;      // largest |u|, m
 };
 
+// The band of density, relative to the initial one, that counts as packed.
+constexpr double kPackedDensityBand = 0.10;
+
 struct StageMetrics {
   double max_soil_ux = 0;       // largest |x - x0| of soil, m
-  double initial_front = 0;     // largest x of soil before any load, m
-  double front = 0;             // largest x of the main soil body now, m
-  double runout = 0;            // front - initial_front, m
+  // The soil's toe before any load and now, and the runout toe -
+  // initial_toe, m: one definition everywhere (sim/runout.hpp).
+  double initial_toe = 0, toe = 0, runout = 0;
   double main_body_fraction = 1;  // soil points in the largest connected group of cells
+  // Soil mass within kPackedDensityBand of its material's initial density: a
+  // packed deposit, not a loose cloud (sim/granular.hpp).
+  double packed_fraction = 1;
   double yielding_fraction = 0;   // soil points that yielded in the last step
   double deposit_slope_deg = 0;   // NaN where no slope can be fitted (see .cpp)
   std::vector<MaterialMotion> materials;

@@ -100,7 +100,6 @@ inline Lane4 load4(const double* p) {
   return v;
 }
 inline void store4(double* p, const Lane4& v) { std::memcpy(p, &v, sizeof v); }
-constexpr Lane4 kOnes = {1.0, 1.0, 1.0, 1.0};
 // Lanes 0..2: a stencil row's three nodes; lane 3 is never part of a result.
 inline double sum3(const Lane4& v) { return (v[0] + v[1]) + v[2]; }
 

@@ -37,7 +37,6 @@ Grid make_grid(const Scenario& s) {
   for (auto* v : {&g.mass, &g.px, &g.py, &g.vx, &g.vy, &g.fx, &g.fy, &g.ax, &g.ay, &g.held_ax,
                   &g.held_ay})
     v->assign(n, 0.0);
-  g.points.assign(n, 0.0);
   g.fix_x.assign(n, 0);
   g.fix_y.assign(n, 0);
 

@@ -36,10 +36,6 @@ struct Grid {
   // The part of (ax, ay) that walls make: all of a held component's
   // acceleration (its force is zero), 0 for a free one.
   std::vector<double> held_ax, held_ay;
-  // Points whose weight on the node is positive: a point alone on all its
-  // nodes is a free body (see update_point_stress). Counted in doubles (exact
-  // up to 2^53) so a stencil row adds to three nodes as one vector.
-  std::vector<double> points;
   // Velocity components held at zero by the walls (1 = fixed).
   std::vector<std::uint8_t> fix_x, fix_y;
   // Walls with Coulomb friction; empty in a scene without them, which then
@@ -49,6 +45,7 @@ struct Grid {
   // wall line and the edge of a point's domain that weights the node, along
   // x (left and right walls) and y (bottom and top); see wall_friction.hpp.
   std::vector<double> wall_gap_x, wall_gap_y;
+  // The step's normal impulse at each friction-wall node (sim/wall_friction.cpp).
   std::vector<double> wall_impulse_x, wall_impulse_y;
 
   // Nodes that particles touched this step: [i_begin, i_end) x [j_begin, j_end).

@@ -12,8 +12,8 @@ MaterialConstants make_material_constants(const MaterialSpec& m) {
   c.shear = E / (2 * (1 + nu));
   // Constrained (P-wave) modulus M = lambda + 2G; c_p = sqrt(M / rho).
   c.wave_speed = std::sqrt((c.lambda + 2 * c.shear) / m.density);
-  c.min_density = m.density / kMaxExpansion;
   c.plastic = m.model == MaterialModel::MohrCoulomb;
+  c.critical_density = c.plastic ? m.critical_density : 0.0;
   if (c.plastic)
     c.mohr_coulomb = MohrCoulomb::make(E, nu, m.cohesion, m.friction_angle, m.dilation_angle);
   return c;

@@ -9,16 +9,14 @@
 
 namespace sim {
 
-// Largest volume of a point relative to its initial volume (see
-// update_point_stress in point_update.cpp).
-constexpr double kMaxExpansion = 2.0;
-
 struct MaterialConstants {
   bool plastic = false;     // Mohr-Coulomb: run the return mapping
   double lambda = 0;        // Lame's first parameter
   double shear = 0;         // shear modulus G
   double wave_speed = 0;    // P-wave speed at the initial density (method notes, section 4)
-  double min_density = 0;   // at kMaxExpansion times the initial volume
+  // Below it a point carries no stress (sim/granular.hpp); 0 for materials
+  // that never lose contact (linear elastic).
+  double critical_density = 0;
   MohrCoulomb mohr_coulomb; // valid when plastic
 };
 

@@ -6,6 +6,7 @@
 
 #include "sim/bands.hpp"
 #include "sim/constitutive.hpp"
+#include "sim/granular.hpp"
 #include "sim/step.hpp"
 
 namespace sim {
@@ -20,12 +21,8 @@ double update_point_stress(World& w, int p, double dt) {
   const Stencil& st = w.stencils[p];
   // Velocity gradient L_ab = sum_i v_ia dS_ip/dx_b, a stencil row at a time.
   Lane4 lxx{}, lxy{}, lyx{}, lyy{};
-  bool alone = true;
   for (int b = 0; b < 3; ++b) {
     const int row = g.node(st.base_i, st.base_j + b);
-    const Lane4 S = st.wx * st.wy[b];
-    const auto shared = (S != 0.0) & (load4(&g.points[row]) != 1.0);  // lanes 0..2 matter
-    alone &= !(shared[0] | shared[1] | shared[2]);
     const Lane4 gx = st.dx * st.wy[b], gy = st.wx * st.dy[b];
     const Lane4 vx = load4(&g.vx[row]), vy = load4(&g.vy[row]);
     lxx += vx * gx;
@@ -37,33 +34,23 @@ double update_point_stress(World& w, int p, double dt) {
   const StrainIncrement de{dt * Lxx, dt * Lyy, 0.5 * dt * (Lxy + Lyx)};  // Eq. (31)
   const MaterialConstants& mat = w.materials[pts.material[p]];
   const Stress old{pts.sxx[p], pts.syy[p], pts.sxy[p], pts.szz[p]};
+  const double volume = pts.volume(p);  // at the start of the step
   Stress s = old;
   jaumann_rotate(s, 0.5 * dt * (Lxy - Lyx));  // Eq. (24)
   elastic_predictor(s, de, mat);              // Eq. (21)
   if (mat.plastic)                            // Eqs. (20)-(23)
     pts.yielded[p] = mohr_coulomb_return(mat.mohr_coulomb, s) != ReturnRegion::Elastic;
-  // A point that shares no node with another is a free body: traction-free
-  // all round, so it carries no stress. Kept, its stress would push it off
-  // every wall it touches (the grid cannot strain a lone point), and
-  // clods thrown off a slide would bounce for ever. Not in the paper.
-  if (alone) s = Stress{};
+  pts.density[p] *= std::exp(-(de.xx + de.yy));  // Eq. (25)
+  // Torn or loosened soil below its critical density carries no stress
+  // (Dunatunga & Kamrin 2015): it counts as yielded, flowing freely.
+  if (disconnect_below_critical_density(pts.density[p], mat, s)) pts.yielded[p] = 1;
   pts.sxx[p] = s.xx;
   pts.syy[p] = s.yy;
   pts.sxy[p] = s.xy;
   pts.szz[p] = s.zz;
-  // Stress power of Eq. (3) over the step, midpoint stress, current volume.
-  const double volume = pts.volume(p);
-  const double work = volume * 0.5 * ((old.xx + s.xx) * de.xx + (old.yy + s.yy) * de.yy +
-                                      2.0 * (old.xy + s.xy) * de.xy);
-  pts.density[p] *= std::exp(-(de.xx + de.yy));  // Eq. (25)
-  // A point torn off the flow keeps "stretching" with the grid until its
-  // GIMP volume, which multiplies its stress in Eq. (16), is tens of times
-  // the original; ramming back into the flow it then throws its neighbours
-  // out of the grid (phi = 10 and 15 at 8370 points). Soil does not dilate
-  // like that: a point's volume is held at most kMaxExpansion times its
-  // initial one. Not in the paper.
-  pts.density[p] = std::max(pts.density[p], mat.min_density);
-  return work;
+  // Stress power of Eq. (3) over the step, midpoint stress.
+  return volume * 0.5 * ((old.xx + s.xx) * de.xx + (old.yy + s.yy) * de.yy +
+                         2.0 * (old.xy + s.xy) * de.xy);
 }
 
 // Adds point p's internal and body forces to its nodes, Eqs. (16), (17).

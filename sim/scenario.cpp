@@ -29,7 +29,8 @@ MaterialSpec parse_material(const Node& node, const std::string& name) {
   m.model = model == "mohr-coulomb" ? MaterialModel::MohrCoulomb : MaterialModel::LinearElastic;
   if (m.model == MaterialModel::MohrCoulomb)
     require_object(node, {"model", "density", "youngs_modulus", "poisson_ratio", "cohesion",
-                          "friction_angle", "dilation_angle"}, "a mohr-coulomb material");
+                          "friction_angle", "dilation_angle", "critical_density"},
+                   "a mohr-coulomb material");
   else
     require_object(node, {"model", "density", "youngs_modulus", "poisson_ratio"},
                    "a linear-elastic material");
@@ -47,6 +48,8 @@ MaterialSpec parse_material(const Node& node, const std::string& name) {
                                    friction, Bound::Closed);
     m.friction_angle = friction * kPi / 180;
     m.dilation_angle = dilation * kPi / 180;
+    m.critical_density = number(required(node, "critical_density", need), 0, Bound::Open,
+                                m.density, Bound::Closed);
   }
   return m;
 }

@@ -26,6 +26,9 @@ struct MaterialSpec {
   double cohesion = 0;        // Pa
   double friction_angle = 0;  // rad
   double dilation_angle = 0;  // rad
+  // Below this density the grains lose contact and carry no stress
+  // (Dunatunga & Kamrin 2015, sim/granular.hpp), kg/m^3, in (0, density].
+  double critical_density = 0;
 };
 
 // A body is a simple polygon (counter-clockwise after loading); rectangles are

@@ -25,7 +25,7 @@ void put_material(BinaryWriter& w, const MaterialSpec& m) {
   w.put_string(m.name);
   w.put(m.model);
   for (double v : {m.density, m.youngs_modulus, m.poisson_ratio, m.cohesion, m.friction_angle,
-                   m.dilation_angle})
+                   m.dilation_angle, m.critical_density})
     w.put(v);
 }
 
@@ -34,7 +34,7 @@ MaterialSpec get_material(BinaryReader& r) {
   m.name = r.get_string();
   m.model = r.get<MaterialModel>();
   for (double* v : {&m.density, &m.youngs_modulus, &m.poisson_ratio, &m.cohesion,
-                    &m.friction_angle, &m.dilation_angle})
+                    &m.friction_angle, &m.dilation_angle, &m.critical_density})
     *v = r.get<double>();
   return m;
 }
@@ -49,7 +49,7 @@ void put_result(BinaryWriter& w, const StageResult& r) {
   w.put(r.ended_at_rest);
   w.put(r.energy);
   const StageMetrics& m = r.metrics;
-  for (double v : {m.max_soil_ux, m.initial_front, m.front, m.runout, m.main_body_fraction,
+  for (double v : {m.max_soil_ux, m.initial_toe, m.toe, m.runout, m.main_body_fraction, m.packed_fraction,
                    m.yielding_fraction, m.deposit_slope_deg})
     w.put(v);
   w.put(std::uint64_t(m.materials.size()));
@@ -70,8 +70,8 @@ StageResult get_result(BinaryReader& rd) {
   r.ended_at_rest = rd.get<bool>();
   r.energy = rd.get<EnergyBalance>();
   StageMetrics& m = r.metrics;
-  for (double* v : {&m.max_soil_ux, &m.initial_front, &m.front, &m.runout,
-                    &m.main_body_fraction, &m.yielding_fraction, &m.deposit_slope_deg})
+  for (double* v : {&m.max_soil_ux, &m.initial_toe, &m.toe, &m.runout,
+                    &m.main_body_fraction, &m.packed_fraction, &m.yielding_fraction, &m.deposit_slope_deg})
     *v = rd.get<double>();
   const auto n = rd.get<std::uint64_t>();
   if (n > 256) rd.fail("a stage result lists " + std::to_string(n) + " materials");

@@ -43,7 +43,6 @@ void reset_grid(World& w) {
     for (int i = g.i_begin; i < g.i_end; ++i) {
       const int k = g.node(i, j);
       g.mass[k] = g.px[k] = g.py[k] = g.fx[k] = g.fy[k] = 0.0;
-      g.points[k] = 0.0;
     }
   }
   if (!g.friction_walls.empty()) reset_wall_gaps(g, first, last);
@@ -63,7 +62,6 @@ void points_to_grid(World& w) {
         store4(&g.mass[row], load4(&g.mass[row]) + S * m);  // Eq. (26)
         store4(&g.px[row], load4(&g.px[row]) + S * mvx);    // Eq. (27)
         store4(&g.py[row], load4(&g.py[row]) + S * mvy);
-        store4(&g.points[row], load4(&g.points[row]) + (S > 0.0 ? kOnes : Lane4{}));
       }
     }
     if (!g.friction_walls.empty()) scatter_wall_gaps(w, band);

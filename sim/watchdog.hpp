@@ -13,9 +13,9 @@ namespace sim {
 
 // Largest density of a point relative to its material's initial density. The
 // soils here strain about 1 % under their own weight; a point squeezed to
-// two-thirds of its volume means a crushed stencil, not soil. (Expansion is
-// held at kMaxExpansion by the stress update instead: torn-off points would
-// otherwise stretch without bound.)
+// two-thirds of its volume means a crushed stencil, not soil. (Expansion has
+// no bound: soil below its critical density carries no stress, so a torn-off
+// point may stretch as far as the grid takes it, sim/granular.hpp.)
 constexpr double kMaxCompression = 1.5;
 
 // Steps between full scans of the points (and saves of the last good state).

@@ -103,28 +103,6 @@ TEST(ValidationMeasures, SurfaceOfABlockOfPoints) {
   EXPECT_NEAR(app::rms_surface_difference(p, lower, 0.005), 0.005, 1e-12);
 }
 
-TEST(ValidationMeasures, ThicknessToeCountsMaterialNotScatteredPoints) {
-  // Points 2 mm apart, a window of 10 mm: a block 20 mm thick is 20 mm thick
-  // (also at the wall, where half the window is off the floor), and its toe
-  // lies within the window's half width (5 mm) of its edge.
-  const double s = 0.002, half = 0.005, step = 0.0005;
-  sim::Particles p = block(0.0, 0.3, 0.02, s);
-  app::Curve t = app::deposit_thickness(p, half, step);
-  EXPECT_NEAR(t.y[static_cast<std::size_t>(std::lround(0.15 / step))], 0.02, 1e-12);
-  EXPECT_NEAR(t.y[0], 0.02, 1e-12);
-  EXPECT_NEAR(app::curve_toe(t, 0.0015), 0.3, half);
-  // A layer one point (2 mm) thick beyond it carries the toe on to its end...
-  add_block(p, 0.3, 0.4, 0.002, s);
-  const double layer_toe = app::curve_toe(app::deposit_thickness(p, half, step), 0.0015);
-  EXPECT_NEAR(layer_toe, 0.4, half);
-  // ...points scattered 10 mm apart beyond that hold 0.4 mm of material: not counted.
-  for (double x = 0.41; x < 0.5; x += 0.01) add_block(p, x - 0.5 * s, x + 0.5 * s, s, s);
-  EXPECT_NEAR(app::curve_toe(app::deposit_thickness(p, half, step), 0.0015), layer_toe, 1e-12);
-  // A layer 1 mm thick is thinner than 1.5 mm from the wall on.
-  EXPECT_EQ(app::curve_toe(app::deposit_thickness(block(0.0, 0.1, 0.001, 0.001), half, step),
-                           0.0015), 0.0);
-}
-
 // Points beyond a plane through (0.18, 0) at angle theta moved 10 mm to the
 // right: the boundary of those that did not move lies on the plane.
 void check_failure_line(double theta_deg) {

@@ -35,7 +35,7 @@ const char* const kScene = R"json({
   "materials": {
     "block": {"model": "mohr-coulomb", "density": 2000, "youngs_modulus": 2e7,
               "poisson_ratio": 0.25, "cohesion": 5000, "friction_angle": 30,
-              "dilation_angle": 0}
+              "dilation_angle": 0, "critical_density": 1900}
   },
   "bodies": [{"name": "block", "material": "block", "rectangle": {"min": [1, 0], "max": [3, 1.5]}}],
   "time_step": {"courant": 0.5},

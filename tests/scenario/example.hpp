@@ -20,7 +20,7 @@ inline const char* const kExample = R"json({
   "materials": {
     "soil": {"model": "mohr-coulomb", "density": 2000, "youngs_modulus": 2e7,
              "poisson_ratio": 0.25, "cohesion": 40000, "friction_angle": 30,
-             "dilation_angle": 10},
+             "dilation_angle": 10, "critical_density": 1900},
     "house": {"model": "linear-elastic", "density": 500, "youngs_modulus": 2e7,
               "poisson_ratio": 0.3},
     "bedrock": {"model": "linear-elastic", "density": 2600, "youngs_modulus": 1e9,

@@ -74,6 +74,7 @@ TEST(ScenarioParse, MaterialsInKeyOrderWithAnglesInRadians) {
   EXPECT_EQ(soil.cohesion, 40000);
   EXPECT_DOUBLE_EQ(soil.friction_angle, rad(30));
   EXPECT_DOUBLE_EQ(soil.dilation_angle, rad(10));
+  EXPECT_EQ(soil.critical_density, 1900.0);
 }
 
 TEST(ScenarioParse, BodiesAreCounterClockwisePolygons) {
