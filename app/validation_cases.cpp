@@ -111,14 +111,14 @@ std::vector<ValidationRow> change_rows(const std::string& name, const std::strin
       r.tolerance = before;
       r.reference += "; below the change before";
     }
-    rows.push_back(r);
     if (last_tolerance >= 0 && k + 1 == values.size()) {
+      if (r.at_most) rows.push_back(r);  // the check against the change before, then this one
       r.at_most = true;
       r.tolerance = last_tolerance;
       r.reference = "relative to the finer run; the finest change below " +
                     fmt("%g", 100 * last_tolerance) + " %";
-      rows.push_back(r);
     }
+    rows.push_back(r);
     before = change;
   }
   return rows;

@@ -63,9 +63,19 @@ sim::Scenario granular_column() {
   m.youngs_modulus = 0.84e6;
   m.poisson_ratio = 0.3;
   m.friction_angle = 30 * M_PI / 180;
+  m.critical_density = m.density;  // the granular regime on, as in the shipped scenes
   s.materials = {m};
   s.bodies[0].material = 0;
   s.bodies[0].polygon = {{0, 0}, {0.2, 0}, {0.2, 0.4}, {0, 0.4}};
+  return s;
+}
+
+// The same column on a Coulomb friction base, mu = 0.5: what a friction wall
+// costs (sim/wall_friction.hpp).
+sim::Scenario friction_column() {
+  sim::Scenario s = granular_column();
+  s.name = "friction-column";
+  s.boundaries.bottom = {sim::BoundaryKind::Friction, 0.5};
   return s;
 }
 
@@ -166,6 +176,7 @@ int main(int argc, char** argv) {
   const int steps = child ? 20 : argc > 1 ? std::atoi(argv[1]) : 300;
   std::vector<Scene> scenes = {{"elastic column (16 cells)", load("elastic-column")},
                                {"granular column, Mohr-Coulomb", granular_column()},
+                               {"granular column, friction base", friction_column()},
                                {"paper slope phi=20, n1648", load("paper-slope-phi20-n1648")},
                                {"paper slope phi=20, n8370", load("paper-slope-phi20")},
                                {"paper slope phi=20, n28724", load("paper-slope-phi20-n28724")},
