@@ -44,6 +44,7 @@ nlohmann::json metrics_json(const sim::StageMetrics& m) {
           {"runout_m", m.runout},
           {"main_body_fraction", m.main_body_fraction},
           {"packed_fraction", m.packed_fraction},
+          {"disconnected_fraction", m.disconnected_fraction},
           {"yielding_fraction", m.yielding_fraction},
           {"deposit_slope_deg", slope},
           {"materials", materials}};

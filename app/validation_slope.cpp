@@ -64,6 +64,8 @@ SlopeRun run_slope(const ValidationSuite& suite, int phi, double h, double coura
     rest.tolerance = 0.5;
     r.rows.push_back(rest);
     r.rows.push_back(row(r.name, "soil packed, within 10 % of its density", r.packed, "-"));
+    r.rows.push_back(row(r.name, "soil disconnected, below its critical density",
+                         slide.metrics.disconnected_fraction, "-"));
     r.rows.push_back(row(r.name, "deposit slope [deg]", r.slope, "-"));
     for (const ValidationRow& e : energy_rows(r.name, run)) r.rows.push_back(e);
   } catch (const sim::SimulationError& e) {

@@ -9,7 +9,11 @@
 //    too long), same Courant numbers, against the finest run (finest
 //    resolution, smallest Courant): relative runout error and RMS difference
 //    of the final free surface (slope_surface.hpp).
-// Prints both tables and writes accuracy-elastic-column.png and
+// 3. The granular scenes (bench/accuracy_granular.cpp): the Bui et al. (2008)
+//    column against the experiment's toe on two bases, and a column of
+//    aspect ratio 1 against its finest run.
+// 4. The paper's slope at phi = 10 deg, as 2. (table only).
+// Prints the tables and writes accuracy-elastic-column.png and
 // accuracy-paper-slope.png (wall seconds on x, error on y, log-log). Prints
 // figures; never fails on timing.
 //
@@ -23,6 +27,7 @@
 #include <string>
 #include <vector>
 
+#include "bench/accuracy_granular.hpp"
 #include "bench/loglog_plot.hpp"
 #include "bench/slope_surface.hpp"
 #include "render/png_io.hpp"
@@ -142,21 +147,25 @@ std::vector<Run> column_study(bool full) {
   return runs;
 }
 
-std::vector<Run> slope_study(bool full) {
+// The slope of paper-slope-phiN.json at the resolutions of 1661 and 8370
+// points (--full: 28711 too), each at the three Courant numbers.
+std::vector<Run> slope_study(int phi, bool full) {
   struct Resolution {
     const char* label;
-    const char* file;
+    double h;
   };
-  std::vector<Resolution> levels = {{"n1648", "paper-slope-phi20-n1648"},
-                                    {"n8370", "paper-slope-phi20"}};
-  if (full) levels.push_back({"n28724", "paper-slope-phi20-n28724"});
+  std::vector<Resolution> levels = {{"n1648", 1.127}, {"n8370", 0.5}};
+  if (full) levels.push_back({"n28724", 0.270});
+  const sim::Scenario scene = load("paper-slope-phi" + std::to_string(phi));
   std::vector<Run> runs;
   for (const Resolution& level : levels)
     for (int c = 2; c >= 0; --c) {  // cheapest first
       if (full && std::string(level.label) == "n28724" && c == 0) continue;  // 0.1: too long
       Run run;
       run.scene = level.label;
-      timed_run(load(level.file), kCourants[c], run,
+      sim::Scenario s = scene;
+      s.cell_size = level.h;
+      timed_run(s, kCourants[c], run,
                 [&](const sim::Scenario& sc, const sim::Simulation& sim) {
                   run.runout = sim.results().back().metrics.runout;
                   run.surface = bench::soil_surface(sc, sim.world(), 1.0);
@@ -169,7 +178,7 @@ std::vector<Run> slope_study(bool full) {
     run.error = std::fabs(run.runout - ref.runout) / ref.runout;
     run.surface_rms = bench::surface_rms_difference(run.surface, ref.surface);
   }
-  std::printf("\nPaper slope phi = 20 deg, reference: %s at Courant %g (runout %.3f m)\n",
+  std::printf("\nPaper slope phi = %d deg, reference: %s at Courant %g (runout %.3f m)\n", phi,
               ref.scene.c_str(), ref.courant, ref.runout);
   std::printf("%-7s %7s %7s %8s %8s %9s %10s %12s %14s\n", "scene", "h [m]", "points", "Courant",
               "steps", "wall [s]", "runout [m]", "runout err", "surface RMS [m]");
@@ -267,8 +276,10 @@ int main(int argc, char** argv) {
   render::Font font;
   const std::vector<Run> column = column_study(full);
   plot_column(column, out + "/accuracy-elastic-column.png", font);
-  const std::vector<Run> slope = slope_study(full);
+  const std::vector<Run> slope = slope_study(20, full);
   plot_slope(slope, out + "/accuracy-paper-slope.png", font);
+  slope_study(10, full);
+  bench::granular_studies(LANDSLIDE_SOURCE_DIR "/scenarios", full);
   std::printf("\nwrote %s/accuracy-elastic-column.png and %s/accuracy-paper-slope.png\n",
               out.c_str(), out.c_str());
   return 0;

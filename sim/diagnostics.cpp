@@ -96,7 +96,7 @@ StageMetrics measure_stage(const World& w) {
   StageMetrics m;
   std::size_t soil = 0, main = 0, yielding = 0;
   const std::vector<char> in_main = main_body(w, soil, main);
-  double soil_mass = 0, packed_mass = 0;
+  double soil_mass = 0, packed_mass = 0, disconnected_mass = 0;
   std::vector<double> sum_ux(w.materials.size(), 0), sum_uy(w.materials.size(), 0);
   std::vector<double> max_u(w.materials.size(), 0), count(w.materials.size(), 0);
   for (std::size_t p = 0; p < pts.size(); ++p) {
@@ -112,6 +112,7 @@ StageMetrics measure_stage(const World& w) {
     soil_mass += pts.mass[p];
     const double ratio = pts.density[p] / w.material_specs[mat].density;
     if (std::fabs(ratio - 1.0) <= kPackedDensityBand) packed_mass += pts.mass[p];
+    if (pts.density[p] < w.materials[mat].critical_density) disconnected_mass += pts.mass[p];
   }
   if (soil > 0) {
     const Runout r = measure_runout(w);
@@ -119,6 +120,7 @@ StageMetrics measure_stage(const World& w) {
     m.toe = r.toe;
     m.runout = r.runout;
     m.packed_fraction = packed_mass / soil_mass;
+    m.disconnected_fraction = disconnected_mass / soil_mass;
     m.main_body_fraction = static_cast<double>(main) / soil;
     m.yielding_fraction = static_cast<double>(yielding) / soil;
     m.deposit_slope_deg = deposit_slope(w, in_main);

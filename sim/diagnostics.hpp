@@ -46,6 +46,8 @@ struct StageMetrics {
   // Soil mass within kPackedDensityBand of its material's initial density: a
   // packed deposit, not a loose cloud (sim/granular.hpp).
   double packed_fraction = 1;
+  // Soil mass below its critical density: disconnected, carrying no stress.
+  double disconnected_fraction = 0;
   double yielding_fraction = 0;   // soil points that yielded in the last step
   double deposit_slope_deg = 0;   // NaN where no slope can be fitted (see .cpp)
   std::vector<MaterialMotion> materials;

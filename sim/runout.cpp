@@ -8,7 +8,7 @@ namespace sim {
 
 namespace {
 
-// Bins per cell of the profile; the window is one cell, kBins bins.
+// Bins per window of the profile.
 constexpr int kBins = 8;
 
 bool is_soil(const World& w, std::size_t p) { return w.materials[w.points.material[p]].plastic; }
@@ -23,9 +23,9 @@ void square(const World& w, std::size_t p, bool initial, double& x, double& half
 
 }  // namespace
 
-ThicknessProfile deposit_thickness(const World& w, const std::vector<char>& counted, bool initial) {
+ThicknessProfile deposit_thickness(const World& w, const std::vector<char>& counted, bool initial,
+                                   double window) {
   ThicknessProfile prof;
-  const double window = w.grid.h;
   prof.step = window / kBins;
   double lo = std::numeric_limits<double>::max(), hi = std::numeric_limits<double>::lowest();
   for (std::size_t p = 0; p < w.points.size(); ++p) {
@@ -50,7 +50,7 @@ ThicknessProfile deposit_thickness(const World& w, const std::vector<char>& coun
       if (overlap > 0) area[k] += per_length * overlap * prof.step;
     }
   }
-  // Window of one cell centred on each bin: kBins - 1 whole bins and two halves.
+  // The window centred on each bin: kBins - 1 whole bins and two halves.
   prof.thickness.assign(bins, 0.0);
   const int half = kBins / 2;
   for (std::size_t k = 0; k < bins; ++k) {
@@ -95,8 +95,9 @@ Runout measure_runout(const World& w) {
   }
   if (low > high) return r;
   r.threshold = kToeThicknessFraction * (high - low);
-  r.initial_toe = toe_beyond(deposit_thickness(w, soil, true), left, r.threshold);
-  r.toe = toe_beyond(deposit_thickness(w, soil, false), r.initial_toe, r.threshold);
+  r.window = kToeWindowFraction * (high - low);
+  r.initial_toe = toe_beyond(deposit_thickness(w, soil, true, r.window), left, r.threshold);
+  r.toe = toe_beyond(deposit_thickness(w, soil, false, r.window), r.initial_toe, r.threshold);
   r.runout = r.toe - r.initial_toe;
   return r;
 }

@@ -49,7 +49,7 @@ void put_result(BinaryWriter& w, const StageResult& r) {
   w.put(r.ended_at_rest);
   w.put(r.energy);
   const StageMetrics& m = r.metrics;
-  for (double v : {m.max_soil_ux, m.initial_toe, m.toe, m.runout, m.main_body_fraction, m.packed_fraction,
+  for (double v : {m.max_soil_ux, m.initial_toe, m.toe, m.runout, m.main_body_fraction, m.packed_fraction, m.disconnected_fraction,
                    m.yielding_fraction, m.deposit_slope_deg})
     w.put(v);
   w.put(std::uint64_t(m.materials.size()));
@@ -71,7 +71,7 @@ StageResult get_result(BinaryReader& rd) {
   r.energy = rd.get<EnergyBalance>();
   StageMetrics& m = r.metrics;
   for (double* v : {&m.max_soil_ux, &m.initial_toe, &m.toe, &m.runout,
-                    &m.main_body_fraction, &m.packed_fraction, &m.yielding_fraction, &m.deposit_slope_deg})
+                    &m.main_body_fraction, &m.packed_fraction, &m.disconnected_fraction, &m.yielding_fraction, &m.deposit_slope_deg})
     *v = rd.get<double>();
   const auto n = rd.get<std::uint64_t>();
   if (n > 256) rd.fail("a stage result lists " + std::to_string(n) + " materials");

@@ -1,0 +1,100 @@
+// Run time against error for the granular scenes of issue 13 (a part of
+// bench/accuracy): the Bui et al. (2008) column against the experiment's toe,
+// on the scene's no-slip base and on a friction base, and the collapse of a
+// column of aspect ratio 1 on the friction base against its finest run, each
+// at several cell sizes and Courant numbers. The runout is sim/runout.hpp's.
+#include "bench/accuracy_granular.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "app/bui_experiment.hpp"
+#include "app/validation_cases.hpp"
+#include "sim/runout.hpp"
+#include "sim/simulation.hpp"
+
+namespace bench {
+
+namespace {
+
+struct GranularRun {
+  double h = 0, courant = 0, wall = 0, value = 0, error = 0;
+  std::size_t points = 0;
+  long steps = 0;
+};
+
+GranularRun run(sim::Scenario s, double h, double courant) {
+  s.cell_size = h;
+  s.time_step.courant = courant;
+  s.output.frame_interval = 0;
+  s.output.vtk = "none";
+  GranularRun r;
+  r.h = h;
+  r.courant = courant;
+  const auto start = std::chrono::steady_clock::now();
+  sim::Simulation simulation(s);
+  sim::Observer quiet;
+  simulation.run(quiet);
+  r.wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  r.points = simulation.world().points.size();
+  for (const sim::StageResult& res : simulation.results()) r.steps += res.steps;
+  r.value = simulation.results().back().metrics.toe;
+  return r;
+}
+
+void print(const char* title, const char* measure, const std::vector<GranularRun>& runs) {
+  std::printf("\n%s\n%8s %7s %8s %8s %9s %12s %10s\n", title, "h [mm]", "points", "Courant",
+              "steps", "wall [s]", measure, "error");
+  for (const GranularRun& r : runs)
+    std::printf("%8.3g %7zu %8.2f %8ld %9.2f %12.4f %+9.2f%%\n", r.h * 1000, r.points, r.courant,
+                r.steps, r.wall, r.value, 100 * r.error);
+  std::fflush(stdout);
+}
+
+std::vector<double> cell_sizes(bool full) {
+  std::vector<double> h = {0.01, 0.005, 0.0025};
+  if (full) h.push_back(0.00125);
+  return h;
+}
+
+}  // namespace
+
+void granular_studies(const std::string& scenarios, bool full) {
+  const sim::Scenario bui = sim::load_scenario(scenarios + "/validation/bui2008-column.json");
+  const app::Curve surface =
+      app::read_curve(scenarios + "/validation/data/bui2008-experiment-surface.csv", 2);
+  const double toe = app::curve_toe(surface, sim::kToeThicknessFraction * 0.1);
+  for (const bool friction : {false, true}) {
+    sim::Scenario s = bui;
+    if (friction) s.boundaries.bottom = {sim::BoundaryKind::Friction, app::kRodsBaseFriction};
+    std::vector<GranularRun> runs;
+    for (const double h : cell_sizes(full))
+      for (const double courant : {0.5, 0.25}) {
+        GranularRun r = run(s, h, courant);
+        r.error = (r.value - toe) / toe;
+        runs.push_back(r);
+      }
+    const std::string title = std::string("Bui column, ") +
+                              (friction ? "friction base" : "no-slip base (the scene)") +
+                              ": toe against the experiment's " + std::to_string(toe) + " m";
+    print(title.c_str(), "toe [m]", runs);
+  }
+  // Aspect ratio 1: a 0.1 m x 0.1 m column of the rods on the friction base;
+  // the reference is the finest grid at the smaller Courant number.
+  sim::Scenario column = bui;
+  column.domain_max = {1.0, 0.12};
+  column.bodies.front().polygon = {{0, 0}, {0.1, 0}, {0.1, 0.1}, {0, 0.1}};
+  column.boundaries.bottom = {sim::BoundaryKind::Friction, app::kColumnBaseFriction};
+  std::vector<GranularRun> runs;
+  for (const double h : cell_sizes(full))
+    for (const double courant : {0.5, 0.25}) runs.push_back(run(column, h, courant));
+  const double reference = runs.back().value;
+  for (GranularRun& r : runs) r.error = (r.value - reference) / reference;
+  print("Column collapse, aspect ratio 1, friction base: toe against the finest run",
+        "toe [m]", runs);
+}
+
+}  // namespace bench
