@@ -2,7 +2,9 @@
 // bench/accuracy): the Bui et al. (2008) column against the experiment's toe,
 // on the scene's no-slip base and on a friction base, and the collapse of a
 // column of aspect ratio 1 on the friction base against its finest run, each
-// at several cell sizes and Courant numbers. The runout is sim/runout.hpp's.
+// at several cell sizes and Courant numbers; then the paper's slope with the
+// paper's FLIP update beside APIC (sim/apic.hpp), the candidate cure for the
+// transfer loss. The runout is sim/runout.hpp's.
 #include "bench/accuracy_granular.hpp"
 
 #include <chrono>
@@ -95,6 +97,48 @@ void granular_studies(const std::string& scenarios, bool full) {
   for (GranularRun& r : runs) r.error = (r.value - reference) / reference;
   print("Column collapse, aspect ratio 1, friction base: toe against the finest run",
         "toe [m]", runs);
+  transfer_study(scenarios, full);
+}
+
+// The paper's slope at phi = 20 and 10 with each transfer scheme, at 1661
+// and 8370 points (--full: 28711) and Courant 0.5 and 0.25: the runout, how
+// much of gravity's work the transfers lose, the balance of Eq. (3), and the
+// runout's change when the step halves.
+void transfer_study(const std::string& scenarios, bool full) {
+  std::printf("\nPaper slope, FLIP (the paper's Eq. 30) and APIC (Jiang et al. 2015)\n");
+  std::printf("%4s %5s %7s %7s %8s %9s %10s %12s %10s %14s\n", "phi", "", "points", "Courant",
+              "steps", "wall [s]", "runout [m]", "transfer/W", "balance", "vs Courant 0.5");
+  std::vector<double> cells = {1.127, 0.5};
+  if (full) cells.push_back(0.270);
+  for (const int phi : {20, 10})
+    for (const sim::TransferScheme scheme : {sim::TransferScheme::Flip, sim::TransferScheme::Apic})
+      for (const double h : cells) {
+        double own = 0;
+        for (const double courant : {0.5, 0.25}) {
+          sim::Scenario s = sim::load_scenario(scenarios + "/paper-slope-phi" +
+                                               std::to_string(phi) + ".json");
+          s.cell_size = h;
+          s.time_step.courant = courant;
+          s.transfer = scheme;
+          s.output.frame_interval = 0;
+          s.output.vtk = "none";
+          const auto start = std::chrono::steady_clock::now();
+          sim::Simulation simulation(s);
+          sim::Observer quiet;
+          simulation.run(quiet);
+          const double wall =
+              std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+          const sim::StageResult& slide = simulation.results().back();
+          const double runout = slide.metrics.runout;
+          if (courant == 0.5) own = runout;
+          std::printf("%4d %5s %7zu %7.2f %8ld %9.2f %10.3f %12.4f %+9.2f%% %+13.2f%%\n", phi,
+                      scheme == sim::TransferScheme::Apic ? "APIC" : "FLIP",
+                      simulation.world().points.size(), courant, slide.steps, wall, runout,
+                      slide.energy.transfer_loss / slide.energy.external_work,
+                      100 * slide.energy.relative_error, 100 * (runout - own) / own);
+          std::fflush(stdout);
+        }
+      }
 }
 
 }  // namespace bench

@@ -69,7 +69,16 @@ struct Grid {
 // similar names): the kinetic energy the walls' holds take from the grid, the
 // part friction takes, and sum_i m_i |dv_i|^2 / 2 of the velocity change the
 // walls make (for the transfer loss).
-enum RowSum : int { kRowWallLoss, kRowFrictionWork, kRowWallChangeOnGrid, kRowSums };
+// With APIC (sim/apic.hpp), also the grid's kinetic energy as mapped from
+// the points and after the step's update, for the transfer loss.
+enum RowSum : int {
+  kRowWallLoss,
+  kRowFrictionWork,
+  kRowWallChangeOnGrid,
+  kRowGridKineticMapped,
+  kRowGridKineticUpdated,
+  kRowSums
+};
 
 // Builds the grid for a scenario: walls on the domain lines (the right and top
 // walls on the first grid line at or beyond domain.max), boundary flags per

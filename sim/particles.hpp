@@ -18,6 +18,8 @@ struct Particles {
   std::vector<double> density;  // current; volume = mass / density
   std::vector<double> sxx, syy, sxy, szz;
   std::vector<std::uint8_t> material;
+  // APIC only (sim/apic.hpp), empty otherwise: the affine velocity C_p.
+  std::vector<double> cxx, cxy, cyx, cyy;
 
   // Cold: where each point started, where its displacement is measured from,
   // and whether it yielded in the last step (painted as 2 in Eq. 32's field).

@@ -139,13 +139,7 @@ void grid_to_points(World& w, const StepInput& in) {
       signal = std::max(signal, w.materials[material[p]].wave_speed + std::sqrt(v2));
       walled += 0.5 * m * in.dt * in.dt * (wx * wx + wy * wy);
     }
-    double* sums = &w.band_sums[band * kBandSums];
-    sums[kGravityWork] = gravity_work;
-    sums[kKineticEnergy] = kinetic;
-    sums[kMovingKineticEnergy] = moving;
-    sums[kDampingLoss] = damped;
-    sums[kMaxSignal] = signal;
-    sums[kWallChangeOnPoints] = walled;
+    store_point_sums(w, band, {gravity_work, kinetic, moving, damped, signal, walled});
   });
 }
 

@@ -214,7 +214,7 @@ TimeStepSpec parse_time_step(const Node& node) {
 Scenario parse_document(const Json& doc, const std::string& file) {
   const Node root{doc, "", file};
   require_object(root, {"name", "description", "domain", "grid", "gravity", "boundaries",
-                        "materials", "bodies", "time_step", "stages", "output"});
+                        "materials", "bodies", "time_step", "transfer", "stages", "output"});
   Scenario s;
   s.source_path = file;
   const Node name = required(root, "name");
@@ -245,6 +245,9 @@ Scenario parse_document(const Json& doc, const std::string& file) {
   parse_bodies(required(root, "bodies"), s);
   check_memory_budget_of_points(root, s);
   s.time_step = parse_time_step(required(root, "time_step"));
+  if (root.has("transfer"))
+    s.transfer = one_of(root.at("transfer"), {"flip", "apic"}) == "apic" ? TransferScheme::Apic
+                                                                        : TransferScheme::Flip;
   s.stages = parse_stages(required(root, "stages"), s.materials);
   s.output = parse_output(required(root, "output"), s.stages);
   return s;

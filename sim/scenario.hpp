@@ -52,6 +52,11 @@ struct Boundaries {
   Wall left, right, bottom, top;
 };
 
+// How velocities go from the grid back to the points: the paper's FLIP-like
+// increments (Eq. 30, "mapping only the changes"), or the affine
+// particle-in-cell transfer of Jiang et al. (2015), sim/apic.hpp.
+enum class TransferScheme { Flip, Apic };
+
 struct TimeStepSpec {
   enum class Mode { Courant, Fixed } mode = Mode::Courant;
   double courant = 0;   // Mode::Courant: dt = courant * h / max_p(c_p + |v_p|)
@@ -111,6 +116,7 @@ struct Scenario {
   std::vector<MaterialSpec> materials;
   std::vector<BodySpec> bodies;
   TimeStepSpec time_step;
+  TransferScheme transfer = TransferScheme::Flip;  // optional key; the paper's by default
   std::vector<StageSpec> stages;
   OutputSpec output;
 };

@@ -59,6 +59,9 @@ World make_world(const Scenario& s) {
   pts.ref_x = pts.x;
   pts.ref_y = pts.y;
   pts.yielded.assign(n, 0);
+  w.transfer = s.transfer;
+  if (s.transfer == TransferScheme::Apic)
+    for (auto* v : {&pts.cxx, &pts.cxy, &pts.cyx, &pts.cyy}) v->assign(n, 0.0);
   return w;
 }
 

@@ -117,6 +117,7 @@ std::uint64_t stage_prefix_key(const Scenario& s, std::size_t stages) {
     w.put(wall.friction);
   }
   w.put(s.time_step.mode);
+  w.put(s.transfer);
   for (const MaterialSpec& m : s.materials) put_material(w, m);
   for (const BodySpec& b : s.bodies) {
     w.put_string(b.name);
@@ -185,6 +186,8 @@ std::string Simulation::save_state(std::string buffer) const {
   for (const std::vector<double>* a : point_arrays(pts)) w.put_vector(*a);
   w.put_vector(pts.material);
   w.put_vector(pts.yielded);
+  if (world_.transfer == TransferScheme::Apic)
+    for (const std::vector<double>* a : {&pts.cxx, &pts.cxy, &pts.cyx, &pts.cyy}) w.put_vector(*a);
   return w.take();
 }
 
@@ -226,6 +229,9 @@ void Simulation::restore_state(const std::string& bytes, const std::string& labe
   for (std::vector<double>* a : point_arrays(pts)) *a = rd.get_vector<double>(n, "a point array");
   pts.material = rd.get_vector<std::uint8_t>(n, "the material array");
   pts.yielded = rd.get_vector<std::uint8_t>(n, "the yielded array");
+  if (world_.transfer == TransferScheme::Apic)
+    for (std::vector<double>* a : {&pts.cxx, &pts.cxy, &pts.cyx, &pts.cyy})
+      *a = rd.get_vector<double>(n, "an affine velocity array");
   if (!rd.at_end()) rd.fail("bytes after the end of the state");
 }
 

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 
+#include "sim/apic.hpp"
 #include "sim/bands.hpp"
 #include "sim/wall_friction.hpp"
 
@@ -14,21 +15,24 @@ namespace sim {
 
 // The whole step is one parallel region: a thread keeps its bands of points
 // and rows of nodes from phase to phase (sim/bands.hpp), and the phases are
-// separated by barriers, not by starting new teams of threads.
+// separated by barriers, not by starting new teams of threads. The transfers
+// are the paper's (FLIP-like increments) or APIC's (sim/apic.hpp), chosen
+// once per step.
 void step(World& w, const StepInput& in, StepReport& report) {
   prepare_locate(w);
+  const bool apic = w.transfer == TransferScheme::Apic;
 #pragma omp parallel
   {
     if (locate_and_sort(w)) {  // false on every thread if a point left the grid
       reset_grid(w);
 #pragma omp barrier
-      points_to_grid(w);
+      if (apic) points_to_grid_apic(w); else points_to_grid(w);
       enforce_walls_on_momentum(w);
 #pragma omp barrier
       update_stress_and_forces(w, in);
       update_nodal_momentum(w, in.dt);
 #pragma omp barrier
-      grid_to_points(w, in);
+      if (apic) grid_to_points_apic(w, in); else grid_to_points(w, in);
     }
   }
   if (w.bad_point < static_cast<int>(w.points.size())) throw_point_left_grid(w);
@@ -79,6 +83,7 @@ void enforce_walls_on_momentum(World& w) {
   Grid& g = w.grid;
   int first, last;
   own_rows(w, first, last);
+  if (w.transfer == TransferScheme::Apic) grid_kinetic_by_row(g, first, last, kRowGridKineticMapped);
   for (int j = first; j < last; ++j) {
     double removed = 0;
     for (int i = g.i_begin; i < g.i_end; ++i) {
@@ -126,17 +131,20 @@ void update_nodal_momentum(World& w, double dt) {
     }
   }
   if (!g.friction_walls.empty()) friction_walls_on_update(g, first, last, dt);
+  if (w.transfer == TransferScheme::Apic) grid_kinetic_by_row(g, first, last, kRowGridKineticUpdated);
 }
 
 // The step's sums, band by band (row by row for the walls) in a fixed order.
 StepReport sum_step_report(const World& w) {
   StepReport r;
-  double wall_change_on_grid = 0;
+  double wall_change_on_grid = 0, grid_mapped = 0, grid_updated = 0, points_before = 0;
   for (std::size_t row = 0; row < w.grid.row_sums.size(); row += kRowSums) {
     const double* sums = &w.grid.row_sums[row];
     r.wall_loss += sums[kRowWallLoss];
     r.friction_work += sums[kRowFrictionWork];
     wall_change_on_grid += sums[kRowWallChangeOnGrid];
+    grid_mapped += sums[kRowGridKineticMapped];
+    grid_updated += sums[kRowGridKineticUpdated];
   }
   for (std::size_t b = 0; b + 1 < w.band_start.size(); ++b) {
     const double* sums = &w.band_sums[b * kBandSums];
@@ -147,8 +155,13 @@ StepReport sum_step_report(const World& w) {
     r.damping_loss += sums[kDampingLoss];
     r.max_signal = std::max(r.max_signal, sums[kMaxSignal]);
     r.wall_change_on_points += sums[kWallChangeOnPoints];
+    points_before += sums[kKineticBeforeGrid];
   }
-  r.transfer_loss = wall_change_on_grid - r.wall_change_on_points;
+  // FLIP: what the walls' change costs the points beyond what the walls took
+  // (StepReport); APIC: both transfers' loss, measured (sim/apic.hpp).
+  r.transfer_loss = w.transfer == TransferScheme::Apic
+                        ? (points_before - grid_mapped) + (grid_updated - r.moving_kinetic_energy)
+                        : wall_change_on_grid - r.wall_change_on_points;
   return r;
 }
 

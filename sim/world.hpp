@@ -25,6 +25,7 @@ struct World {
   Particles points;
   Grid grid;
   GimpShape gimp;  // cell size and the l_p of every point (uGIMP keeps the initial size)
+  TransferScheme transfer = TransferScheme::Flip;
   std::vector<MaterialSpec> material_specs;  // as they stand now (material changes edit them)
   std::vector<MaterialConstants> materials;
 
@@ -57,7 +58,23 @@ enum BandSum : int {
   kDampingLoss,
   kMaxSignal,  // a maximum, not a sum
   kWallChangeOnPoints,
+  kKineticBeforeGrid,  // APIC: the points' kinetic energy at the start of the step
   kBandSums  // how many
 };
+
+// What a velocity update (grid to points) sums over one band's points.
+struct PointSums {
+  double gravity_work, kinetic, moving, damped, signal, walled;
+};
+
+inline void store_point_sums(World& w, int band, const PointSums& s) {
+  double* sums = &w.band_sums[band * kBandSums];
+  sums[kGravityWork] = s.gravity_work;
+  sums[kKineticEnergy] = s.kinetic;
+  sums[kMovingKineticEnergy] = s.moving;
+  sums[kDampingLoss] = s.damped;
+  sums[kMaxSignal] = s.signal;
+  sums[kWallChangeOnPoints] = s.walled;
+}
 
 }  // namespace sim

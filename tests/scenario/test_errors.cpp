@@ -42,7 +42,9 @@ const std::vector<BadCase>& bad_cases() {
        {"grid.points_per_cell = 9: expected an integer in [1, 8]"}},
       {"UnknownTopLevelKey", [](Json& d) { d["colour"] = "red"; },
        {"colour: unknown key (allowed: name, description, domain, grid, gravity, boundaries, "
-        "materials, bodies, time_step, stages, output)"}},
+        "materials, bodies, time_step, transfer, stages, output)"}},
+      {"UnknownTransfer", [](Json& d) { d["transfer"] = "pic"; },
+       {"transfer = \"pic\": expected one of \"flip\", \"apic\""}},
       {"UnknownMaterialKey", [](Json& d) { d["materials"]["house"]["cohesion"] = 10; },
        {"materials.house.cohesion: unknown key for a linear-elastic material (allowed: model, "
         "density, youngs_modulus, poisson_ratio)"}},

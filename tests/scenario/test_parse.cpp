@@ -38,6 +38,15 @@ TEST(ScenarioParse, TopLevelDomainGridGravityBoundaries) {
   EXPECT_EQ(s.boundaries.top.kind, sim::BoundaryKind::Free);
 }
 
+TEST(ScenarioParse, TransferIsTheFlipUpdateUnlessApicIsAsked) {
+  nlohmann::json doc = nlohmann::json::parse(kExample);
+  EXPECT_EQ(parse(doc).transfer, sim::TransferScheme::Flip);
+  doc["transfer"] = "apic";
+  EXPECT_EQ(parse(doc).transfer, sim::TransferScheme::Apic);
+  doc["transfer"] = "flip";
+  EXPECT_EQ(parse(doc).transfer, sim::TransferScheme::Flip);
+}
+
 TEST(ScenarioParse, FrictionWallKeepsItsCoefficient) {
   nlohmann::json doc = nlohmann::json::parse(kExample);
   doc["boundaries"]["bottom"] = {{"friction", 0.35}};
