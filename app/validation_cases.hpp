@@ -34,7 +34,7 @@ struct ValidationRow {
 struct ValidationSuite {
   std::string scenarios;  // folder holding validation/ and paper-slope-*.json
   bool quick = false;     // coarse resolutions only, for CI
-  bool finest = false;    // adds the finest resolutions (tens of minutes on two threads)
+  bool finest = false;    // adds the finest resolutions (about an hour on two threads)
 };
 
 // Largest energy balance error (Eq. 3) of a run's timed stages that a row may show.
