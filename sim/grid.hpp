@@ -52,8 +52,8 @@ struct Grid {
   // Every nodal loop runs over this window only, so empty air costs nothing.
   int i_begin = 0, i_end = 0, j_begin = 0, j_end = 0;
 
-  // Per-row partial sums of what the walls take, row_sums[row * kRowSums +
-  // which], added row by row in a fixed order.
+  // Per-row partial sums, row_sums[row * kRowSums + which] (RowSum below),
+  // added row by row in a fixed order.
   std::vector<double> row_sums;
 
   // Nodes per row in memory: nx and one spare node that no point weights.
