@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "sim/scenario.hpp"
+
 namespace app {
 
 // One line of the validation table. A row with a tolerance is a check: it
@@ -51,6 +53,14 @@ constexpr double kRodsBaseFriction = 0.36;
 // column +33, +17 and +6 % from h = 10 to 1.25 mm; with mu = 0.25: +15, +13
 // and -0.1 %).
 constexpr double kColumnBaseFriction = 0.25;
+
+// The collapse column of aspect ratio `aspect` at cell size h: the rods of
+// `bui` (scenarios/validation/bui2008-column.json), L0 = 0.1 m wide and
+// aspect * L0 high against the left wall, on the kColumnBaseFriction base, in
+// a domain 1 m long, without frames or VTK. Shared by validate and
+// bench/accuracy.
+sim::Scenario collapse_column(const sim::Scenario& bui, double aspect, double h);
+constexpr double kCollapseWidth = 0.1;  // L0, m
 
 std::vector<ValidationRow> elastic_column_case(const ValidationSuite& suite);
 std::vector<ValidationRow> bui_column_case(const ValidationSuite& suite);

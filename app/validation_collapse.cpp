@@ -21,12 +21,14 @@ namespace app {
 
 namespace {
 
-constexpr double kWidth = 0.1;           // L0, m
 constexpr double kDomainLength = 1.0;    // room for a runout of 9 L0
 constexpr double kAspects[] = {0.5, 1.0, 2.0};
 constexpr double kFinestChange = 0.05;   // issue 13: under 5 % between the two finest grids
+constexpr double kWidth = kCollapseWidth;
 
-sim::Scenario column(const sim::Scenario& bui, double aspect, double h) {
+}  // namespace
+
+sim::Scenario collapse_column(const sim::Scenario& bui, double aspect, double h) {
   sim::Scenario s = bui;
   const double height = aspect * kWidth;
   s.name = "column-a" + fmt("%g", aspect);
@@ -39,8 +41,6 @@ sim::Scenario column(const sim::Scenario& bui, double aspect, double h) {
   return s;
 }
 
-}  // namespace
-
 std::vector<ValidationRow> column_collapse_case(const ValidationSuite& suite) {
   std::vector<ValidationRow> rows;
   if (suite.quick) return rows;
@@ -51,7 +51,7 @@ std::vector<ValidationRow> column_collapse_case(const ValidationSuite& suite) {
     const std::string base = "column collapse a = " + fmt("%g", aspect);
     std::vector<double> runouts;
     for (const double h : cells) {
-      const Run run = run_with_progress(column(bui, aspect, h));
+      const Run run = run_with_progress(collapse_column(bui, aspect, h));
       const std::string name = base + ", h = " + fmt("%g", h * 1000) + " mm (" +
                                std::to_string(run.simulation->world().points.size()) +
                                " points)";

@@ -1,7 +1,7 @@
 // Run time against error for the granular scenes of issue 13 (a part of
 // bench/accuracy): the Bui et al. (2008) column against the experiment's toe,
-// on the scene's no-slip base and on a friction base, and the collapse of a
-// column of aspect ratio 1 on the friction base against its finest run, each
+// on the scene's no-slip base and on a friction base, and the collapse of
+// columns of aspect ratio 0.5, 1 and 2 on the friction base against their finest run, each
 // at several cell sizes and Courant numbers; then the paper's slope with the
 // paper's FLIP update beside APIC (sim/apic.hpp), the candidate cure for the
 // transfer loss. The runout is sim/runout.hpp's.
@@ -84,19 +84,20 @@ void granular_studies(const std::string& scenarios, bool full) {
                               ": toe against the experiment's " + std::to_string(toe) + " m";
     print(title.c_str(), "toe [m]", runs);
   }
-  // Aspect ratio 1: a 0.1 m x 0.1 m column of the rods on the friction base;
-  // the reference is the finest grid at the smaller Courant number.
-  sim::Scenario column = bui;
-  column.domain_max = {1.0, 0.12};
-  column.bodies.front().polygon = {{0, 0}, {0.1, 0}, {0.1, 0.1}, {0, 0.1}};
-  column.boundaries.bottom = {sim::BoundaryKind::Friction, app::kColumnBaseFriction};
-  std::vector<GranularRun> runs;
-  for (const double h : cell_sizes(full))
-    for (const double courant : {0.5, 0.25}) runs.push_back(run(column, h, courant));
-  const double reference = runs.back().value;
-  for (GranularRun& r : runs) r.error = (r.value - reference) / reference;
-  print("Column collapse, aspect ratio 1, friction base: toe against the finest run",
-        "toe [m]", runs);
+  // The collapse columns of validate (app/validation_collapse.cpp) on the
+  // friction base; the reference is each one's finest grid at the smaller
+  // Courant number.
+  for (const double aspect : {0.5, 1.0, 2.0}) {
+    std::vector<GranularRun> runs;
+    for (const double h : cell_sizes(full))
+      for (const double courant : {0.5, 0.25})
+        runs.push_back(run(app::collapse_column(bui, aspect, h), h, courant));
+    const double reference = runs.back().value;
+    for (GranularRun& r : runs) r.error = (r.value - reference) / reference;
+    const std::string title = "Column collapse, aspect ratio " + std::to_string(aspect).substr(0, 3) +
+                              ", friction base: toe against the finest run";
+    print(title.c_str(), "toe [m]", runs);
+  }
   transfer_study(scenarios, full);
 }
 
