@@ -18,28 +18,7 @@ int widest(Font& font, const Ticks& t, int px) {
   return w;
 }
 
-// Categorical bars show one block per integer id; their ticks sit on ids.
-Ticks bar_ticks_for(const FrameSpec& s, bool categorical, int max_ticks) {
-  Ticks t = nice_ticks(s.range_lo, s.range_hi, max_ticks);
-  if (categorical) {
-    t.step = std::max(1.0, t.step);
-    t.decimals = 0;
-    t.values.clear();
-    t.labels.clear();
-    for (double v = std::ceil(s.range_lo); v <= s.range_hi; v += t.step) {
-      t.values.push_back(v);
-      t.labels.push_back(format_tick(v, 0));
-    }
-  }
-  return t;
-}
-
-// Bar value range: categorical bars pad half an id each side so every id
-// gets a block of equal height.
-void bar_range(const FrameSpec& s, bool categorical, double* lo, double* hi) {
-  *lo = categorical ? std::round(s.range_lo) - 0.5 : s.range_lo;
-  *hi = categorical ? std::round(s.range_hi) + 0.5 : s.range_hi;
-}
+bool has_heading(const FrameSpec& s) { return s.show_time || !s.title.empty(); }
 
 }  // namespace
 
@@ -59,30 +38,32 @@ FrameLayout layout_frame(Font& font, const FrameSpec& spec) {
   FrameLayout L;
   L.width = spec.width;
   L.height = spec.height;
-  const double s = std::max(0.5, std::min(spec.width / 1280.0, spec.height / 720.0));
+  L.tick_px = spec.text_px > 0 ? spec.text_px : frame_text_px(spec.width);
+  // Every other size keeps its proportion to the tick labels' 15 px of the
+  // first layout.
+  const double s = L.tick_px / 15.0;
   auto px = [s](double v) { return std::max(1, int(std::lround(v * s))); };
-  L.tick_px = std::max(8, px(15));
-  L.label_px = std::max(9, px(17));
-  L.title_px = std::max(10, px(22));
-  L.tick_len = std::max(3, px(6));
+  L.label_px = px(17);
+  L.title_px = px(22);
+  L.tick_len = px(6);
   L.gap = px(6);
   L.margin = px(14);
-  const bool categorical = ColourMap::by_name(spec.colour_map).is_categorical();
+  L.bar = ColourBarSpec{spec.colour_map, spec.range_lo, spec.range_hi, bar_label(spec),
+                        spec.bar_names, L.tick_px, L.label_px, L.tick_len, L.gap};
   const WorldWindow window{spec.world_x0, spec.world_x1, spec.world_y0, spec.world_y1};
   const int tick_h = font.line_height(L.tick_px), label_h = font.line_height(L.label_px);
   const int bar_w = px(22), bar_gap = px(24);
 
-  const int top = L.margin + font.line_height(L.title_px) + 2 * L.gap;
+  // Without a heading the top y tick label still needs half a line.
+  const int top = has_heading(spec) ? L.margin + font.line_height(L.title_px) + 2 * L.gap
+                                    : L.margin + tick_h / 2;
   const int bottom = 1 + L.tick_len + L.gap + tick_h + L.gap + label_h + L.margin;
   // Label widths depend on the ticks, which depend on the scale, which
   // depends on the margins: iterate until the widths settle.
-  int ytick_w = font.text_width("00", L.tick_px), bar_tick_w = ytick_w;
+  int ytick_w = font.text_width("00", L.tick_px), bar_room = 0;
   for (int pass = 0; pass < 4; ++pass) {
     const int left = L.margin + label_h + L.gap + ytick_w + L.gap + L.tick_len + 1;
-    int right = L.margin + 1;
-    if (spec.show_colour_bar) {
-      right = bar_gap + bar_w + L.tick_len + L.gap + bar_tick_w + L.gap + label_h + L.margin;
-    }
+    const int right = spec.show_colour_bar ? bar_gap + bar_w + bar_room + L.margin : L.margin + 1;
     L.plot_area = Rect{left, top, spec.width - left - right, spec.height - top - bottom};
     if (L.plot_area.w < 16 || L.plot_area.h < 16) {
       throw InvalidArgument("image " + std::to_string(spec.width) + "x" +
@@ -98,18 +79,19 @@ FrameLayout layout_frame(Font& font, const FrameSpec& spec) {
       const double step_px = L.x_ticks.step * L.map.scale();
       if (step_px >= widest(font, L.x_ticks, L.tick_px) + px(16)) break;
     }
+    int new_room = 0;
     if (spec.show_colour_bar) {
       const int bar_h = std::min(L.plot_area.h, std::max(L.box.h, px(260)));
       const int cy = L.box.y + L.box.h / 2;
       const int y0 = std::clamp(cy - bar_h / 2, L.plot_area.y, L.plot_area.bottom() - bar_h);
       L.colour_bar = Rect{L.box.right() + bar_gap, y0, bar_w, bar_h};
-      L.bar_ticks = bar_ticks_for(spec, categorical, std::max(2, bar_h / px(40)));
+      L.bar_ticks = colour_bar_ticks(L.bar, bar_h);
+      new_room = colour_bar_room(font, L.bar, L.bar_ticks);
     }
     const int new_y = widest(font, L.y_ticks, L.tick_px);
-    const int new_bar = spec.show_colour_bar ? widest(font, L.bar_ticks, L.tick_px) : 0;
-    if (new_y <= ytick_w && new_bar <= bar_tick_w) break;
+    if (new_y <= ytick_w && new_room <= bar_room) break;
     ytick_w = std::max(ytick_w, new_y);
-    bar_tick_w = std::max(bar_tick_w, new_bar);
+    bar_room = std::max(bar_room, new_room);
   }
   return L;
 }
@@ -159,35 +141,8 @@ void draw_axes(Image& img, Font& font, const FrameLayout& L, const FrameSpec& sp
             VAlign::Middle, kInk);
 }
 
-void draw_colour_bar(Image& img, Font& font, const FrameLayout& L, const FrameSpec& spec,
-                     const ColourMap& cmap) {
-  const Rect& r = L.colour_bar;
-  double lo = 0, hi = 1;
-  bar_range(spec, cmap.is_categorical(), &lo, &hi);
-  for (int y = 0; y < r.h; ++y) {
-    // Row centre -> value; top row is the high end.
-    const double v = lo + (hi - lo) * (r.h - y - 0.5) / r.h;
-    img.fill_rect(Rect{r.x, r.y + y, r.w, 1}, cmap.map(v, spec.range_lo, spec.range_hi));
-  }
-  frame(img, r, kInk);
-  int widest_label = 0;
-  for (std::size_t i = 0; i < L.bar_ticks.values.size(); ++i) {
-    const double p = r.bottom() - (L.bar_ticks.values[i] - lo) / (hi - lo) * r.h;
-    const int y = tick_pos(p, r.y, r.bottom());
-    img.fill_rect(Rect{r.right() + 1, y, L.tick_len, 1}, kInk);
-    const Rect t = font.draw(img, L.bar_ticks.labels[i], L.tick_px,
-                             r.right() + 1 + L.tick_len + L.gap, y, HAlign::Left,
-                             VAlign::Middle, kInk);
-    widest_label = std::max(widest_label, t.w);
-  }
-  const std::string label = bar_label(spec);
-  if (label.empty()) return;
-  const TextMask m = rotate_ccw(font.render(label, L.label_px));
-  draw_mask(img, m, r.right() + 1 + L.tick_len + 2 * L.gap + widest_label, r.y + r.h / 2,
-            HAlign::Left, VAlign::Middle, kInk);
-}
-
 void draw_heading(Image& img, Font& font, const FrameLayout& L, const FrameSpec& spec) {
+  if (!has_heading(spec)) return;
   const int baseline = L.margin + font.render("Ag", L.title_px).baseline;
   int time_left = L.width - L.margin;
   if (spec.show_time) {
@@ -210,10 +165,9 @@ void draw_heading(Image& img, Font& font, const FrameLayout& L, const FrameSpec&
 
 }  // namespace
 
-void draw_annotations(Image& img, Font& font, const FrameLayout& L, const FrameSpec& spec,
-                      const ColourMap& cmap) {
+void draw_annotations(Image& img, Font& font, const FrameLayout& L, const FrameSpec& spec) {
   draw_axes(img, font, L, spec);
-  if (spec.show_colour_bar) draw_colour_bar(img, font, L, spec, cmap);
+  if (spec.show_colour_bar) draw_colour_bar(img, font, L.colour_bar, L.bar, L.bar_ticks);
   draw_heading(img, font, L, spec);
 }
 

@@ -2,6 +2,7 @@
 // Axes, ticks, colour bar, title and time stamp around the plotted points.
 // Layout is computed first (the splat needs the world->pixel map), drawing
 // happens after the points are painted.
+#include "render/colour_bar.hpp"
 #include "render/colour_map.hpp"
 #include "render/font.hpp"
 #include "render/frame_spec.hpp"
@@ -17,16 +18,17 @@ struct FrameLayout {
   Rect box;           // the world window in pixels (axes frame goes round it)
   Rect colour_bar;    // empty when the spec hides the bar
   Ticks x_ticks, y_ticks, bar_ticks;
+  ColourBarSpec bar;  // the bar's map, range, label and sizes
   int tick_px = 15, label_px = 17, title_px = 22;  // font pixel sizes
   int tick_len = 6, gap = 6, margin = 14;
 };
 
-// Sizes scale with the image (1280x720 is the reference). Throws
+// Sizes scale with the tick labels' (spec.text_px, or frame_text_px of the
+// width). Throws
 // InvalidArgument if the image is too small to hold the annotations.
 FrameLayout layout_frame(Font& font, const FrameSpec& spec);
 
-void draw_annotations(Image& img, Font& font, const FrameLayout& layout,
-                      const FrameSpec& spec, const ColourMap& cmap);
+void draw_annotations(Image& img, Font& font, const FrameLayout& layout, const FrameSpec& spec);
 
 // "t = 12.50 s"
 std::string format_time(double seconds);

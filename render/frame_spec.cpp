@@ -1,5 +1,6 @@
 #include "render/frame_spec.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "render/colour_map.hpp"
@@ -7,6 +8,15 @@
 #include "render/viewport.hpp"
 
 namespace render {
+
+namespace {
+constexpr int kMinTextPx = 17;
+constexpr double kTextFraction = 0.0165;
+}  // namespace
+
+int frame_text_px(int width) {
+  return std::max(kMinTextPx, int(std::lround(width * kTextFraction)));
+}
 
 void validate_frame_spec(const FrameSpec& s) {
   if (s.width < 64 || s.height < 64 || s.width > 16384 || s.height > 16384) {
@@ -16,6 +26,9 @@ void validate_frame_spec(const FrameSpec& s) {
   validate_window(WorldWindow{s.world_x0, s.world_x1, s.world_y0, s.world_y1});
   (void)ColourMap::by_name(s.colour_map);  // throws on unknown names
   validate_range(s.range_lo, s.range_hi);
+  if (s.text_px < 0 || s.text_px > 256) {
+    throw InvalidArgument("text size " + std::to_string(s.text_px) + " px is outside 0..256");
+  }
   if (s.show_time && !std::isfinite(s.time)) {
     throw InvalidArgument("frame time " + std::to_string(s.time) + " is not finite");
   }

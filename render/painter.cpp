@@ -1,13 +1,16 @@
 #include "render/painter.hpp"
 
+#include <algorithm>
 #include <chrono>
 
 #include "render/colour_map.hpp"
+#include "render/outline.hpp"
 
 namespace render {
 
 namespace {
 using Clock = std::chrono::steady_clock;
+constexpr Rgba kOutlineInk{0, 0, 0, 255};
 double ms_since(Clock::time_point t0) {
   return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
 }
@@ -45,7 +48,10 @@ void Painter::paint_into(Image& out, const FrameSpec& spec, const PointsView& po
   timings_.readback_ms = ms_since(t);
 
   t = Clock::now();
-  draw_annotations(out, font_, layout_, spec, cmap);
+  // A line about a tenth of the tick labels' size: 2 px at 1280 px wide.
+  draw_material_edges(out, layout_.map, layout_.box, points, kOutlineInk,
+                      std::max(1, layout_.tick_px / 10));
+  draw_annotations(out, font_, layout_, spec);
   timings_.annotate_ms = ms_since(t);
 }
 

@@ -1,6 +1,8 @@
 #pragma once
-// Several frames on one page: a rows x cols grid, a caption under each
-// image and an overall title above (like the paper's 2x2 figures).
+// Several frames on one page, laid out like a journal's figure: a rows x
+// cols grid, each panel headed by its letter and caption ("(a) t = 4 s")
+// directly above it, an optional title above all, and an optional colour
+// bar that the panels share, right of the grid.
 #include <string>
 #include <vector>
 
@@ -14,6 +16,7 @@ struct PanelStyle {
   int gap = 16;        // between cells
   int caption_px = 18;
   int title_px = 26;
+  bool letters = true;  // "(a) ", "(b) ", ... before the captions, row-major
   Rgba background = kWhite;
   Rgba ink{30, 30, 30, 255};
 };
@@ -22,18 +25,30 @@ struct PanelLayout {
   int width = 0, height = 0;
   int cell_w = 0, cell_h = 0;  // the largest image's size
   std::vector<Rect> images;    // where each image goes, row-major order
-  std::vector<Rect> captions;  // the caption strip under each image
+  std::vector<Rect> captions;  // the caption strip above each image
   Rect title;                  // empty without a title
+  Rect colour_bar;             // empty without a shared bar
 };
 
-// Cells are as large as the largest image; smaller images are centred in
-// theirs. Throws InvalidArgument for an empty grid, too many images or a
-// caption count that is neither 0 nor the image count.
-PanelLayout layout_panel(Font& font, const std::vector<Image>& images, int rows, int cols,
-                         bool has_title, bool has_captions, const PanelStyle& style = {});
+// "(a)" for 0, "(b)" for 1, ... "(z)", then "(27)" on.
+std::string panel_letter(std::size_t i);
 
+// Words of `text` in lines no wider than `width` px at `px` (a word wider
+// than the line gets a line of its own).
+std::vector<std::string> wrap_text(Font& font, const std::string& text, int px, int width);
+
+// Cells are as large as the largest image; smaller images are centred in
+// theirs. `caption_lines`: the caption strip's height in lines (0: none).
+// Throws InvalidArgument for an empty grid, too many images or a bad style.
+PanelLayout layout_panel(Font& font, const std::vector<Image>& images, int rows, int cols,
+                         bool has_title, int caption_lines, const PanelStyle& style = {},
+                         const Image* colour_bar = nullptr);
+
+// Captions (none, or one per image) are wrapped to the cell width; throws
+// InvalidArgument for a caption count that is neither 0 nor the image count.
 Image compose_panel(Font& font, const std::vector<Image>& images,
                     const std::vector<std::string>& captions, int rows, int cols,
-                    const std::string& title, const PanelStyle& style = {});
+                    const std::string& title, const PanelStyle& style = {},
+                    const Image* colour_bar = nullptr);
 
 }  // namespace render

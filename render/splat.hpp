@@ -20,6 +20,9 @@ struct PointsView {
   const double* half_width = nullptr;
   const double* half_height = nullptr;
   const double* value = nullptr;  // scalar field to colour by
+  // Optional material id per point; where given, the painter outlines the
+  // materials other than 0 (outline.hpp).
+  const std::uint8_t* material = nullptr;
 };
 
 // Throws InvalidArgument if count > 0 and any array is null.
