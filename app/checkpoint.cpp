@@ -12,8 +12,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// "LSCHECK" and a format version.
-constexpr std::uint64_t kMagic = 0x4c53434845434b01ULL;
+// "LSCHECK" and a format version (2: frames carry their material ids).
+constexpr std::uint64_t kMagic = 0x4c53434845434b02ULL;
 
 void put_frame(sim::BinaryWriter& w, const Frame& f) {
   w.put(f.number);
@@ -24,6 +24,7 @@ void put_frame(sim::BinaryWriter& w, const Frame& f) {
   w.put_vector(f.half);
   w.put(std::uint64_t(f.values.size()));
   for (const std::vector<float>& v : f.values) w.put_vector(v);
+  w.put_vector(f.material);
 }
 
 Frame get_frame(sim::BinaryReader& r) {
@@ -38,6 +39,10 @@ Frame get_frame(sim::BinaryReader& r) {
   if (fields > 64) r.fail("a frame with " + std::to_string(fields) + " fields");
   for (std::uint64_t k = 0; k < fields; ++k)
     f.values.push_back(r.get_vector<float>(f.x.size(), "a frame's values"));
+  f.material = r.get_vector<std::uint8_t>();
+  if (!f.material.empty() && f.material.size() != f.x.size())
+    r.fail("a frame with " + std::to_string(f.material.size()) + " material ids for " +
+           std::to_string(f.x.size()) + " points");
   return f;
 }
 

@@ -63,7 +63,9 @@ FieldStyle field_style(Field f, const sim::Scenario& scenario) {
       break;
     case Field::RelativeYield:
       s.title = "relative yield";
-      s.label = "relative yield (2 = yielding)";
+      // At the start of a slide the trigger has just removed the cohesion, so
+      // every soil point sits on the yield surface (1) until the first return.
+      s.label = "relative yield (1: at yield, 2: yielded this step)";
       s.fixed_range = true;
       s.lo = 0;
       s.hi = 2;
@@ -80,10 +82,8 @@ FieldStyle field_style(Field f, const sim::Scenario& scenario) {
       break;
     case Field::Material: {
       s.title = "material";
-      std::string names;
-      for (std::size_t m = 0; m < scenario.materials.size(); ++m)
-        names += (m ? ", " : "") + std::to_string(m) + " " + scenario.materials[m].name;
-      s.label = "material: " + names;
+      for (const sim::MaterialSpec& m : scenario.materials) s.names.push_back(m.name);
+      s.label = "material";
       s.categorical = true;
       s.fixed_range = true;
       s.lo = 0;
@@ -110,16 +110,32 @@ Range field_range(const FieldStyle& style, const std::vector<Frame>& frames, std
   return field_range(style, values);
 }
 
+namespace {
+
+// The p-quantile (0..1) of the finite values, nearest rank; NaN for none.
+double quantile(std::vector<float> finite, double p) {
+  if (finite.empty()) return std::numeric_limits<double>::quiet_NaN();
+  const std::size_t k = std::min(finite.size() - 1, std::size_t(p * double(finite.size())));
+  std::nth_element(finite.begin(), finite.begin() + std::ptrdiff_t(k), finite.end());
+  return finite[k];
+}
+
+constexpr double kLowQuantile = 0.01, kHighQuantile = 0.99;
+
+}  // namespace
+
 Range field_range(const FieldStyle& style, const std::vector<const std::vector<float>*>& values) {
   if (style.fixed_range) return Range{style.lo, style.hi};
   double lo = std::numeric_limits<double>::infinity();
   double hi = -lo;
+  std::vector<float> finite;
   for (const std::vector<float>* array : values) {
-    for (const float v : *array) {
-      if (!std::isfinite(v)) continue;
-      lo = std::min(lo, double(v));
-      hi = std::max(hi, double(v));
-    }
+    finite.clear();
+    for (const float v : *array)
+      if (std::isfinite(v)) finite.push_back(v);
+    if (finite.empty()) continue;
+    lo = std::min(lo, quantile(finite, kLowQuantile));
+    hi = std::max(hi, quantile(finite, kHighQuantile));
   }
   if (!(lo <= hi)) {  // no finite value at all
     lo = 0;
@@ -144,4 +160,13 @@ Range field_range(const FieldStyle& style, const std::vector<const std::vector<f
   }
   return Range{lo, hi};
 }
+
+DisplayUnit display_unit(const FieldStyle& style, const Range& range) {
+  const bool displacement =
+      style.field == Field::DisplacementX || style.field == Field::DisplacementY;
+  if (displacement && std::max(std::fabs(range.lo), std::fabs(range.hi)) < 0.5)
+    return DisplayUnit{"mm", 1000};
+  return DisplayUnit{style.unit, 1};
+}
+
 }  // namespace app

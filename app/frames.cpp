@@ -114,6 +114,10 @@ Frame capture(const P& p, const std::vector<Field>& fields, int number, double t
     fr.y[i] = float(p.y(i));
     fr.half[i] = float(half_size(p.volume(i)));
   }
+  if (p.materials().size() > 1) {
+    fr.material.resize(n);
+    for (std::size_t i = 0; i < n; ++i) fr.material[i] = std::uint8_t(std::clamp(p.material(i), 0, 255));
+  }
   fr.values.reserve(fields.size());
   for (const Field f : fields) {
     const std::vector<double> v = values_of(f, p);
@@ -147,7 +151,7 @@ double half_size(double volume) {
 std::size_t Frame::bytes() const {
   std::size_t b = (x.size() + y.size() + half.size()) * sizeof(float);
   for (const auto& v : values) b += v.size() * sizeof(float);
-  return b;
+  return b + material.size();
 }
 
 Frame capture_frame(const sim::World& world, const std::vector<Field>& fields, int number,
@@ -188,12 +192,15 @@ render::FrameSpec frame_spec(const sim::Scenario& scenario, const FieldStyle& st
   spec.world_y0 = w.y0;
   spec.world_y1 = w.y1;
   spec.colour_map = style.categorical ? "categorical" : colour_map;
+  const DisplayUnit shown = display_unit(style, range);
   spec.range_lo = range.lo;
   spec.range_hi = range.hi;
+  spec.bar_scale = shown.scale;
+  if (style.categorical) spec.bar_names = style.names;
   spec.title = scenario.name + " \u2014 " + style.title;
   if (!frame.stage.empty()) spec.title += " (" + frame.stage + ")";
   spec.field_label = style.label;
-  spec.unit = style.unit;
+  spec.unit = shown.unit;
   spec.time = frame.time;
   return spec;
 }
@@ -211,8 +218,8 @@ const render::Image& FramePainter::paint(const render::FrameSpec& spec, const Fr
   half_.resize(n);
   for (std::size_t i = 0; i < n; ++i) half_[i] = kSquareFill * double(frame.half[i]);
   value_.assign(frame.values[k].begin(), frame.values[k].end());
-  const render::PointsView view{n, x_.data(), y_.data(), half_.data(), half_.data(),
-                                value_.data()};
+  render::PointsView view{n, x_.data(), y_.data(), half_.data(), half_.data(), value_.data()};
+  if (frame.material.size() == n) view.material = frame.material.data();
   painter_->paint_into(image_, spec, view);
   return image_;
 }
@@ -220,6 +227,7 @@ const render::Image& FramePainter::paint(const render::FrameSpec& spec, const Fr
 render::VideoOptions video_options(double frame_interval) {
   render::VideoOptions o;
   o.fps = frame_interval > 0 ? int(std::clamp(std::lround(2.0 / frame_interval), 2L, 30L)) : 25;
+  o.play_fps = std::max(kPlayFps, o.fps);
   return o;
 }
 

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -41,6 +42,7 @@ struct FieldStyle {
   bool categorical = false;
   bool fixed_range = false;  // relative yield: always [0, 2]
   double lo = 0, hi = 1;     // the fixed range
+  std::vector<std::string> names;  // categorical: the name of each id
 };
 // The scenario names the materials on the categorical colour bar.
 FieldStyle field_style(Field f, const sim::Scenario& scenario);
@@ -77,6 +79,9 @@ struct Frame {
   std::string stage;      // stage name, for the title ("" if unknown)
   std::vector<float> x, y, half;
   std::vector<std::vector<float>> values;  // one array per field, in the order asked
+  // Material id per point where the scene has more than one material (the
+  // painter outlines all but material 0); empty otherwise.
+  std::vector<std::uint8_t> material;
   std::size_t bytes() const;
 };
 
@@ -88,15 +93,28 @@ Frame capture_frame(const sim::PointState& state,
                     const std::string& stage);
 
 // Colour range of field k over a set of frames (one stage): relative yield
-// [0, 2]; material 0 .. last material id; velocity [0, max]; displacement
-// [min, max] widened to hold 0; stress [min, max]. Non-finite values are
-// ignored; an empty or zero-width range is widened to a unit one.
+// [0, 2]; material 0 .. last material id; the continuous fields from the
+// lowest 1st to the highest 99th percentile of any frame (a robust range: a
+// few outlying points, such as the stress peaks at a house's corners, do not
+// wash out the rest; values beyond are painted in the end colours), velocity
+// from 0, displacement widened to hold 0. Non-finite values are ignored; an
+// empty or zero-width range is widened to a unit one.
 struct Range {
   double lo = 0, hi = 1;
 };
 Range field_range(const FieldStyle& style, const std::vector<Frame>& frames, std::size_t k);
 // The same over the given value arrays.
 Range field_range(const FieldStyle& style, const std::vector<const std::vector<float>*>& values);
+
+// The unit a range is shown in: displacements under 0.5 m in mm (the
+// gravity stage's settlement of a few mm reads 4, not 0.004), everything
+// else in its style's unit. `scale` turns the field's values into it (the
+// colour bar's labels; the values stay in SI units).
+struct DisplayUnit {
+  std::string unit;
+  double scale = 1;
+};
+DisplayUnit display_unit(const FieldStyle& style, const Range& range);
 
 // The world window of every frame of a run: the scenario's domain plus a
 // margin of 3% of its larger side (at least one cell).
@@ -124,7 +142,9 @@ class FramePainter {
   std::vector<double> x_, y_, half_, value_;
 };
 
-// Frames per second of the videos: twice the simulated speed, 2..30.
+// Frames per second of the videos: shown at twice the simulated speed, 2..30,
+// and played at kPlayFps or more (each frame repeated; render/video.hpp).
+constexpr int kPlayFps = 25;
 render::VideoOptions video_options(double frame_interval);
 
 // True when the scenario asks for frames: frame_interval > 0 and at least

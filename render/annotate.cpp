@@ -38,7 +38,7 @@ FrameLayout layout_frame(Font& font, const FrameSpec& spec) {
   FrameLayout L;
   L.width = spec.width;
   L.height = spec.height;
-  L.tick_px = spec.text_px > 0 ? spec.text_px : frame_text_px(spec.width);
+  L.tick_px = spec.text_px > 0 ? spec.text_px : frame_text_px(spec.width, spec.height);
   // Every other size keeps its proportion to the tick labels' 15 px of the
   // first layout.
   const double s = L.tick_px / 15.0;
@@ -48,8 +48,9 @@ FrameLayout layout_frame(Font& font, const FrameSpec& spec) {
   L.tick_len = px(6);
   L.gap = px(6);
   L.margin = px(14);
-  L.bar = ColourBarSpec{spec.colour_map, spec.range_lo, spec.range_hi, bar_label(spec),
-                        spec.bar_names, L.tick_px, L.label_px, L.tick_len, L.gap};
+  L.bar = ColourBarSpec{spec.colour_map, spec.range_lo,  spec.range_hi, bar_label(spec),
+                        spec.bar_names,  spec.bar_scale, L.tick_px,    L.label_px,
+                        L.tick_len,      L.gap};
   const WorldWindow window{spec.world_x0, spec.world_x1, spec.world_y0, spec.world_y1};
   const int tick_h = font.line_height(L.tick_px), label_h = font.line_height(L.label_px);
   const int bar_w = px(22), bar_gap = px(24);

@@ -24,7 +24,7 @@ struct FrameLayout {
 };
 
 // Sizes scale with the tick labels' (spec.text_px, or frame_text_px of the
-// width). Throws
+// size). Throws
 // InvalidArgument if the image is too small to hold the annotations.
 FrameLayout layout_frame(Font& font, const FrameSpec& spec);
 

@@ -47,8 +47,14 @@ int widest(Font& font, const Ticks& t, int px) {
 
 Ticks colour_bar_ticks(const ColourBarSpec& s, int length) {
   const int per_tick = std::max(1, int(std::lround(40.0 * s.tick_px / 15.0)));
+  if (!categorical(s)) {
+    // Nice steps in the labelled unit, placed at the values they stand for.
+    Ticks t = nice_ticks(s.range_lo * s.label_scale, s.range_hi * s.label_scale,
+                         std::max(2, length / per_tick));
+    for (double& v : t.values) v /= s.label_scale;
+    return t;
+  }
   Ticks t = nice_ticks(s.range_lo, s.range_hi, std::max(2, length / per_tick));
-  if (!categorical(s)) return t;
   t.step = std::max(1.0, t.step);
   if (!s.names.empty()) t.step = 1;  // every name is shown
   t.decimals = 0;
@@ -100,6 +106,9 @@ Image paint_colour_bar(Font& font, const ColourBarSpec& s, int strip_w, int stri
                           std::to_string(strip_h) + " (pad " + std::to_string(pad) +
                           ") is too small");
   validate_range(s.range_lo, s.range_hi);
+  if (!(s.label_scale > 0) || !std::isfinite(s.label_scale))
+    throw InvalidArgument("colour bar label scale " + std::to_string(s.label_scale) +
+                          " is not a positive number");
   const Ticks ticks = colour_bar_ticks(s, strip_h);
   // Half a tick label of room above and below, where the end labels reach.
   const int half_text = font.line_height(s.tick_px) / 2 + 1;

@@ -19,6 +19,7 @@ struct ColourBarSpec {
   // Categorical maps: a name per id from range_lo on, written at the ticks in
   // place of the ids. Empty: the ids.
   std::vector<std::string> names;
+  double label_scale = 1;  // ticks are labelled value x label_scale (m -> mm: 1000)
   int tick_px = 15, label_px = 17;  // font pixel sizes
   int tick_len = 6, gap = 6;
 };

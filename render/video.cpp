@@ -111,9 +111,9 @@ VideoFiles encode_video(const std::string& frames_dir, const std::string& out_di
     throw InvalidArgument("video name '" + name +
                           "' must be a plain file name (no '/', not starting with '.')");
   }
-  if (opt.fps < 1 || opt.fps > 240 || opt.gif_fps < 1 || opt.gif_width < 16 ||
-      opt.crf < 0 || opt.crf > 51) {
-    throw InvalidArgument("video options out of range (fps 1..240, gif_fps >= 1, "
+  if (opt.fps < 1 || opt.fps > 240 || opt.play_fps < opt.fps || opt.play_fps > 240 ||
+      opt.gif_width < 16 || opt.crf < 0 || opt.crf > 51) {
+    throw InvalidArgument("video options out of range (fps 1..240, play_fps fps..240, "
                           "gif_width >= 16, crf 0..51)");
   }
   // Absolute paths: a directory named "-x" can never pass for an option.
@@ -128,15 +128,18 @@ VideoFiles encode_video(const std::string& frames_dir, const std::string& out_di
     throw VideoError("output directory " + out.string() + " does not exist");
   }
   const Image frame0 = read_png(first.string());  // size for the GIF; fails early if corrupt
-  const std::string pattern = escape_percent(dir.string()) + "/%06d.png";
-  const std::vector<std::string> input = {"-framerate", std::to_string(opt.fps),
-                                          "-start_number", "0", "-i", pattern};
+  auto input_of = [&](const fs::path& d) {
+    return std::vector<std::string>{"-framerate", std::to_string(opt.fps), "-start_number", "0",
+                                    "-i", escape_percent(d.string()) + "/%06d.png"};
+  };
+  const std::vector<std::string> input = input_of(dir);
+  const std::string repeat = "fps=" + std::to_string(opt.play_fps);
 
   VideoFiles files;
   files.mp4 = (out / (name + ".mp4")).string();
   std::vector<std::string> mp4 = input;
   // x264 with yuv420p needs even sizes: pad (not scale) to keep pixels sharp.
-  mp4.insert(mp4.end(), {"-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2:color=white",
+  mp4.insert(mp4.end(), {"-vf", repeat + ",pad=ceil(iw/2)*2:ceil(ih/2)*2:color=white",
                          "-c:v", "libx264", "-preset", "medium", "-crf",
                          std::to_string(opt.crf), "-pix_fmt", "yuv420p", "-movflags",
                          "+faststart", "-f", "mp4"});
@@ -144,13 +147,13 @@ VideoFiles encode_video(const std::string& frames_dir, const std::string& out_di
 
   if (opt.gif) {
     files.gif = (out / (name + ".gif")).string();
+    const bool own = !opt.gif_frames_dir.empty();
     const int width = std::min(opt.gif_width, frame0.width());
-    const int fps = std::min(opt.gif_fps, opt.fps);
+    const std::string scale = own ? "" : ",scale=" + std::to_string(width) + ":-1:flags=lanczos";
     // One palette for the whole clip (palettegen), then dithered mapping.
-    const std::string graph = "fps=" + std::to_string(fps) + ",scale=" +
-                              std::to_string(width) +
-                              ":-1:flags=lanczos,split[a][b];[a]palettegen[p];[b][p]paletteuse";
-    std::vector<std::string> gif = input;
+    const std::string graph =
+        repeat + scale + ",split[a][b];[a]palettegen[p];[b][p]paletteuse";
+    std::vector<std::string> gif = own ? input_of(fs::absolute(opt.gif_frames_dir)) : input;
     gif.insert(gif.end(), {"-vf", graph, "-loop", "0", "-f", "gif"});
     run_to(opt, gif, files.gif);
   }

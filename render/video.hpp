@@ -6,12 +6,20 @@
 
 namespace render {
 
+// Frames are shown at `fps` (the pace of the story: a few frames per second
+// of a slide painted every 0.5 s) and played at `play_fps`: each frame is
+// repeated until the next is due, so players that stutter below 24 fps
+// play a smooth clip of the same length. (Interpolating between frames would
+// show states the simulation never had.)
 struct VideoOptions {
-  int fps = 25;           // frames per second of the mp4
+  int fps = 25;           // frames shown per second
+  int play_fps = 25;      // frames per second of the files (at least fps); GIF: 4 cs delays
   int crf = 20;           // x264 quality, lower is better (0..51)
   bool gif = true;        // also write the GIF
   int gif_width = 480;    // GIF width in px (never upscaled); aspect kept
-  int gif_fps = 12;       // GIF frame rate (frames are dropped to reach it)
+  // Frames painted at the GIF's own size, so their text stays legible
+  // (DIR/%06d.png, as many as the video's). "": the video's frames, scaled.
+  std::string gif_frames_dir;
   std::string ffmpeg = "ffmpeg";  // program name or path
 };
 

@@ -90,6 +90,35 @@ TEST(Video, EncodesMp4AndGifFromNumberedFrames) {
   }
 }
 
+// Issue 14: 4 frames shown at 4 per second play at 25 fps for the same 1 s,
+// each frame repeated; the GIF comes from its own frames when given.
+TEST(Video, PlaysAtTwentyFiveFpsAndTakesTheGifFramesGiven) {
+  std::string why;
+  if (!ffmpeg_available(&why)) GTEST_SKIP() << "ffmpeg unusable: " << why;
+  render_test::TempDir dir;
+  const std::string frames = dir.file("frames"), small = dir.file("small");
+  fs::create_directory(frames);
+  fs::create_directory(small);
+  write_frames(frames, 4, 64, 48);
+  write_frames(small, 4, 32, 24);
+  VideoOptions opt;
+  opt.fps = 4;
+  opt.gif_frames_dir = small;
+  const VideoFiles out = encode_video(frames, dir.path(), "clip", opt);
+  const ProcessResult mp4 =
+      run_process({"ffprobe", "-v", "error", "-count_frames", "-select_streams", "v:0",
+                   "-show_entries", "stream=r_frame_rate,nb_read_frames", "-of",
+                   "default=nw=1", out.mp4});
+  ASSERT_TRUE(mp4.ok()) << mp4.output;
+  EXPECT_NE(mp4.output.find("r_frame_rate=25/1"), std::string::npos) << mp4.output;
+  EXPECT_NE(mp4.output.find("nb_read_frames=25"), std::string::npos) << mp4.output;
+  const ProcessResult gif = run_process({"ffprobe", "-v", "error", "-select_streams", "v:0",
+                                         "-show_entries", "stream=width", "-of",
+                                         "default=nw=1", out.gif});
+  ASSERT_TRUE(gif.ok()) << gif.output;
+  EXPECT_NE(gif.output.find("width=32"), std::string::npos) << gif.output;
+}
+
 TEST(Video, FailuresThrowAndLeaveNoOutput) {
   render_test::TempDir dir;
   try {
