@@ -4,9 +4,9 @@
 #include <cmath>
 #include <cstdio>
 
+#include "app/gallery_figure.hpp"
 #include "app/gallery_parts.hpp"
 #include "render/font.hpp"
-#include "render/panel.hpp"
 #include "render/png_io.hpp"
 
 namespace app::gallery {
@@ -15,10 +15,10 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// Four 1280-px panels would make a 2600-px page; 960 px keeps the mp4 near
-// full HD, and 300 px is about what the 116 m x 20 m domain needs at that
-// width (the figures' 560 px leaves white bands, which add up over 2 x 2).
-constexpr int kPanelWidth = 960, kPanelHeight = 300;
+// Four 960-px panels keep the mp4's page near full HD; the GIF's pages are
+// painted at 420 px a panel (about 1000 px a page), where the figure's text
+// rule (digits 1.2 % of the page) still gives 12 px digits.
+constexpr int kPanelWidth = 960, kGifPanelWidth = 420;
 constexpr double kInterval = 0.5;  // s of slide time between frames (the runs' frame_interval)
 
 std::string frame_name(int i) {
@@ -72,31 +72,31 @@ std::vector<render::VideoFiles> write_side_by_side(const std::vector<const RunRe
   const FieldStyle style = field_style(Field::DisplacementX, runs.front()->scenario);
   const Range range = field_range(style, values);
   const int cols = runs.size() >= 4 ? 2 : int(runs.size());
-  const int rows = (int(runs.size()) + cols - 1) / cols;
 
-  const fs::path frames = work / "frames";
+  const fs::path frames = work / "frames", gif_frames = work / "gif-frames";
   fs::create_directories(frames);
-  FramePainter painter(kPanelWidth, kPanelHeight);
+  fs::create_directories(gif_frames);
+  FramePainter painter(kPanelWidth, 300);
   render::Font font;
   for (int page = 0; page < pages; ++page) {
     const double t = page * kInterval;
-    std::vector<render::Image> images;
-    std::vector<std::string> captions;
+    std::vector<FigurePanel> panels;
     for (std::size_t k = 0; k < runs.size(); ++k) {
       const RunResult& r = *runs[k];
-      const Frame& f = frame_at(r.slide_frames, t);
-      render::FrameSpec spec = frame_spec(r.scenario, style, r.scenario.output.colour_map, range, f);
-      spec.width = kPanelWidth;
-      spec.height = kPanelHeight;
-      images.push_back(painter.paint(spec, f, 0));
       const bool over = t > r.slide_frames.back().time + 1e-6;
-      captions.push_back(labels[k] + (over ? ": " + ending(r) : ""));
+      panels.push_back({&r.scenario, &frame_at(r.slide_frames, t), labels[k] + (over ? ": " + ending(r) : "")});
     }
-    render::write_png(render::compose_panel(font, images, captions, rows, cols, title),
-                      (frames / frame_name(page)).string());
+    FigureShape shape;
+    shape.cols = cols;
+    shape.title = title + ", t = " + fmt(t) + " s";
+    for (const auto& [dir, width] : {std::pair{frames, kPanelWidth}, {gif_frames, kGifPanelWidth}}) {
+      shape.panel_width = width;
+      render::write_png(figure_page(font, painter, panels, 0, style, range, shape),
+                        (dir / frame_name(page)).string());
+    }
   }
   render::VideoOptions options = video_options(kInterval);
-  options.gif_width = 640;  // four panels in 480 px are too small to read
+  options.gif_frames_dir = gif_frames.string();
   const render::VideoFiles v = render::encode_video(frames.string(), work.string(), name, options);
   std::vector<render::VideoFiles> files{{(out / (name + ".mp4")).string(), ""}};
   copy_atomically(v.mp4, files[0].mp4);

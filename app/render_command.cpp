@@ -302,7 +302,15 @@ render::Image compose(const std::vector<render::Image>& images,
   const int c = std::max(1, std::min(cols, n));
   const int rows = (n + c - 1) / c;
   render::Font font;
-  return render::compose_panel(font, images, captions, rows, c, title);
+  // The gallery's layout: captions after (a), (b), ... right above each
+  // image, in text whose digits are 1.2 % of the page's width.
+  int widest = 0;
+  for (const render::Image& img : images) widest = std::max(widest, img.width());
+  render::PanelStyle st;
+  st.caption_px = render::figure_text_px(font, c * widest);
+  st.title_px = st.caption_px * 5 / 4;
+  st.margin = st.gap = st.caption_px / 2;
+  return render::compose_panel(font, images, captions, rows, c, title, st);
 }
 
 }  // namespace

@@ -97,6 +97,15 @@ FrameLayout layout_frame(Font& font, const FrameSpec& spec) {
   return L;
 }
 
+int height_for_width(Font& font, FrameSpec spec) {
+  // Laid out in a frame tall enough that the width decides the scale, the
+  // plot area keeps a spare band of (plot height - box height) rows.
+  spec.height = std::max(64, 4 * spec.width);
+  if (spec.text_px == 0) spec.text_px = frame_text_px(spec.width, spec.height);
+  const FrameLayout L = layout_frame(font, spec);
+  return std::max(64, spec.height - (L.plot_area.h - L.box.h));
+}
+
 namespace {
 
 // Pixel column/row of a 1 px tick at edge position p inside [lo, hi]. Ticks

@@ -28,6 +28,10 @@ struct FrameLayout {
 // InvalidArgument if the image is too small to hold the annotations.
 FrameLayout layout_frame(Font& font, const FrameSpec& spec);
 
+// The image height at which spec's world window, fitted to its width, fills
+// the plot with no blank band above or below (its width, text and bar kept).
+int height_for_width(Font& font, FrameSpec spec);
+
 void draw_annotations(Image& img, Font& font, const FrameLayout& layout, const FrameSpec& spec);
 
 // "t = 12.50 s"

@@ -172,6 +172,16 @@ TextMask Font::render(const std::string& utf8, int pixel_size) {
   return m;
 }
 
+int ink_height(const TextMask& m) {
+  int rows = 0;
+  for (int y = 0; y < m.height; ++y) {
+    bool ink = false;
+    for (int x = 0; x < m.width && !ink; ++x) ink = m.at(x, y) >= 128;
+    rows += ink;
+  }
+  return rows;
+}
+
 TextMask rotate_ccw(const TextMask& m) {
   TextMask r;
   r.width = m.height;

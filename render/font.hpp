@@ -23,6 +23,10 @@ struct TextMask {
   std::uint8_t at(int x, int y) const { return alpha[std::size_t(y) * width + x]; }
 };
 
+// Rows of the mask with at least half coverage somewhere: the ink's height
+// (what a reader sees as the text's size).
+int ink_height(const TextMask& m);
+
 // Quarter turn counter-clockwise: text then reads bottom to top (y labels).
 TextMask rotate_ccw(const TextMask& m);
 

@@ -29,7 +29,6 @@ std::vector<std::uint8_t> label_pixels(const PixelMap& map, const Rect& clip,
   return label;
 }
 
-bool secondary(std::uint8_t id) { return id != 0 && id != kEmpty; }
 
 }  // namespace
 
@@ -41,18 +40,20 @@ void draw_material_edges(Image& img, const PixelMap& map, const Rect& clip_in,
   const std::vector<std::uint8_t> label = label_pixels(map, clip, points);
   auto at = [&](int x, int y) { return label[std::size_t(y) * clip.w + x]; };
   std::vector<std::uint8_t> edge(label.size(), 0);
-  const int t = std::max(1, thickness);
+  const int t = std::max(1, thickness / 2);
+  // Another material at (x, y), seen from material a.
+  auto other = [&](int x, int y, std::uint8_t a) {
+    if (x < 0 || y < 0 || x >= clip.w || y >= clip.h) return false;
+    const std::uint8_t b = at(x, y);
+    return b != a && b != kEmpty;
+  };
   for (int y = 0; y < clip.h; ++y) {
     for (int x = 0; x < clip.w; ++x) {
       const std::uint8_t a = at(x, y);
-      if (!secondary(a)) continue;
-      // A secondary pixel is on the outline if any pixel within t of it
-      // (4-neighbourhood steps) holds something else.
+      if (a == kEmpty) continue;
       bool on = false;
-      for (int d = 1; d <= t && !on; ++d) {
-        on = (x - d < 0 || at(x - d, y) != a) || (x + d >= clip.w || at(x + d, y) != a) ||
-             (y - d < 0 || at(x, y - d) != a) || (y + d >= clip.h || at(x, y + d) != a);
-      }
+      for (int d = 1; d <= t && !on; ++d)
+        on = other(x - d, y, a) || other(x + d, y, a) || other(x, y - d, a) || other(x, y + d, a);
       edge[std::size_t(y) * clip.w + x] = on;
     }
   }

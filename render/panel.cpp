@@ -35,6 +35,13 @@ std::string panel_letter(std::size_t i) {
   return "(" + std::to_string(i + 1) + ")";
 }
 
+int figure_text_px(Font& font, int page_width, double fraction) {
+  const double wanted = fraction * page_width;
+  int px = 6;
+  while (px < 512 && ink_height(font.render("0123456789", px)) < wanted) ++px;
+  return px;
+}
+
 std::vector<std::string> wrap_text(Font& font, const std::string& text, int px, int width) {
   std::vector<std::string> lines;
   std::istringstream words(text);

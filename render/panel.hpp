@@ -37,6 +37,13 @@ std::string panel_letter(std::size_t i);
 // than the line gets a line of its own).
 std::vector<std::string> wrap_text(Font& font, const std::string& text, int px, int width);
 
+// Journal figures: text whose digits are at least this share of the page's
+// width stays legible when the page is printed at a column's width.
+constexpr double kFigureTextFraction = 0.012;
+// The smallest font size (em, px) whose digits are at least
+// `fraction` x `page_width` px tall.
+int figure_text_px(Font& font, int page_width, double fraction = kFigureTextFraction);
+
 // Cells are as large as the largest image; smaller images are centred in
 // theirs. `caption_lines`: the caption strip's height in lines (0: none).
 // Throws InvalidArgument for an empty grid, too many images or a bad style.

@@ -10,17 +10,6 @@
 namespace render {
 namespace {
 
-// Rows of the mask with at least half coverage: the ink's height in px.
-int ink_height(const TextMask& m) {
-  int rows = 0;
-  for (int y = 0; y < m.height; ++y) {
-    bool ink = false;
-    for (int x = 0; x < m.width && !ink; ++x) ink = m.at(x, y) >= 128;
-    rows += ink;
-  }
-  return rows;
-}
-
 TEST(ColourBar, StandaloneBarRunsLowToHighUpwards) {
   Font font;
   ColourBarSpec s;
@@ -65,6 +54,16 @@ TEST(FrameText, DigitsAtLeastTwelvePixelsTallAt480AndScaleWithWidth) {
     EXPECT_GE(ink_height(font.render("0123456789", L.tick_px)), 12) << width << " px";
     EXPECT_GE(L.tick_px, int(0.0165 * width)) << width << " px";
   }
+}
+
+TEST(FrameText, HeightForWidthLeavesNoBlankBand) {
+  Font font;
+  FrameSpec s;
+  s.world_x1 = 116, s.world_y1 = 20;
+  s.height = height_for_width(font, s);
+  const FrameLayout L = layout_frame(font, s);
+  EXPECT_LE(L.plot_area.h - L.box.h, 1);
+  EXPECT_LE(L.plot_area.w - L.box.w, 1);
 }
 
 TEST(FrameText, NoHeadingRowWithoutTitleOrTime) {

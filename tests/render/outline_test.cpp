@@ -1,5 +1,5 @@
-// The material outline: a line round a secondary material, none round the
-// bulk, and nothing at all without material ids.
+// Material edges: a line where two materials touch, none against empty
+// space, and nothing at all without material ids.
 #include <gtest/gtest.h>
 
 #include <cstdint>
@@ -34,24 +34,25 @@ Squares slab_and_block() {
   return s;
 }
 
-TEST(Outline, LinesTheSecondaryMaterialOnly) {
+TEST(Outline, LinesWhereTwoMaterialsTouchOnly) {
   const PixelMap map(WorldWindow{0, 20, 0, 10}, 0, 0, 10);  // y = 10 m at row 0
   const Squares s = slab_and_block();
   Image img(200, 100, kWhite);
   draw_material_edges(img, map, Rect{0, 0, 200, 100}, s.view(true), kBlack, 2);
-  // The block spans x 40..59, rows 40..59 (y 6..4 m): its border rows are
-  // inked, its middle is not.
-  EXPECT_EQ(img.at(50, 40), kBlack);
-  EXPECT_EQ(img.at(50, 59), kBlack);  // where it sits on the slab
-  EXPECT_EQ(img.at(40, 50), kBlack);
-  EXPECT_EQ(img.at(50, 50), kWhite);
-  // The slab's own border with empty space stays unlined.
+  // The block spans x 40..59, rows 40..59 (y 6..4 m) and sits on the slab's
+  // top row 60: the rows either side of that contact are inked.
+  EXPECT_EQ(img.at(50, 59), kBlack);
+  EXPECT_EQ(img.at(50, 60), kBlack);
+  EXPECT_EQ(img.at(50, 58), kWhite);
+  EXPECT_EQ(img.at(50, 61), kWhite);
+  // Borders with empty space stay unlined: the block's top and sides, the slab's.
+  EXPECT_EQ(img.at(50, 40), kWhite);
+  EXPECT_EQ(img.at(40, 50), kWhite);
   EXPECT_EQ(img.at(10, 60), kWhite);
-  EXPECT_EQ(img.at(0, 80), kWhite);
   int ink = 0;
   for (int y = 0; y < 100; ++y)
     for (int x = 0; x < 200; ++x) ink += img.at(x, y) == kBlack;
-  EXPECT_EQ(ink, 20 * 20 - 16 * 16);  // a 2 px ring round the 20 x 20 px block
+  EXPECT_EQ(ink, 2 * 20);
 }
 
 TEST(Outline, NoMaterialIdsNoLines) {

@@ -49,6 +49,13 @@ TEST(Panel, SizeAndOffsetsOfATwoByTwoPageWithCaptionsAbove) {
   }
 }
 
+TEST(Panel, FigureTextIsTheSmallestSizeWithTallEnoughDigits) {
+  Font font;
+  const int px = figure_text_px(font, 2600);
+  EXPECT_GE(ink_height(font.render("0123456789", px)), 0.012 * 2600);
+  EXPECT_LT(ink_height(font.render("0123456789", px - 1)), 0.012 * 2600);
+}
+
 TEST(Panel, LettersRunRowMajor) {
   EXPECT_EQ(panel_letter(0), "(a)");
   EXPECT_EQ(panel_letter(3), "(d)");

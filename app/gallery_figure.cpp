@@ -1,0 +1,85 @@
+#include "app/gallery_figure.hpp"
+
+#include <algorithm>
+
+#include "render/annotate.hpp"
+#include "render/colour_bar.hpp"
+#include "render/panel.hpp"
+
+namespace app::gallery {
+
+namespace {
+
+// A panel's frame: the run's window and colours, none of its own heading or
+// bar, at the figure's text size.
+render::FrameSpec panel_spec(const FigurePanel& p, const FieldStyle& style, const Range& range,
+                             int width, int text_px) {
+  render::FrameSpec spec =
+      frame_spec(*p.scenario, style, p.scenario->output.colour_map, range, *p.frame);
+  spec.title.clear();
+  spec.show_time = false;
+  spec.show_colour_bar = false;
+  spec.width = width;
+  spec.text_px = text_px;
+  return spec;
+}
+
+render::ColourBarSpec bar_spec(const render::FrameSpec& panel, int text_px) {
+  render::ColourBarSpec bar;
+  bar.colour_map = panel.colour_map;
+  bar.range_lo = panel.range_lo;
+  bar.range_hi = panel.range_hi;
+  bar.label = render::bar_label(panel);
+  bar.names = panel.bar_names;
+  bar.label_scale = panel.bar_scale;
+  bar.tick_px = text_px;
+  bar.label_px = text_px;
+  bar.tick_len = bar.gap = std::max(2, text_px / 3);
+  return bar;
+}
+
+int page_width(int panel_w, int cols, int gap, int margin, int bar_w) {
+  return 2 * margin + cols * panel_w + (cols - 1) * gap + gap + bar_w;
+}
+
+}  // namespace
+
+render::Image figure_page(render::Font& font, FramePainter& painter,
+                          const std::vector<FigurePanel>& panels, std::size_t k,
+                          const FieldStyle& style, const Range& range, const FigureShape& shape) {
+  const int n = int(panels.size());
+  const int cols = std::min(shape.cols, n);
+  const int rows = (n + cols - 1) / cols;
+  // The text size sets the bar's width, which sets the page's width, which
+  // sets the text size: grow the text until its digits reach 1.2 % of the page.
+  int text_px = 12, panel_h = 0;
+  render::Image bar;
+  for (int pass = 0; pass < 8; ++pass) {
+    render::FrameSpec spec = panel_spec(panels.front(), style, range, shape.panel_width, text_px);
+    panel_h = render::height_for_width(font, spec);
+    const int gap = text_px / 2;
+    const int caption_h = font.line_height(text_px);
+    const int strip_h = std::max(64, rows * panel_h + (rows - 1) * (gap + caption_h) - 2 * text_px);
+    bar = render::paint_colour_bar(font, bar_spec(spec, text_px), std::max(8, text_px), strip_h,
+                                   gap);
+    const int needed = render::figure_text_px(
+        font, page_width(shape.panel_width, cols, gap, gap, bar.width()));
+    if (needed <= text_px) break;
+    text_px = needed;
+  }
+  std::vector<render::Image> images;
+  std::vector<std::string> captions;
+  for (const FigurePanel& p : panels) {
+    render::FrameSpec spec = panel_spec(p, style, range, shape.panel_width, text_px);
+    spec.height = panel_h;
+    images.push_back(painter.paint(spec, *p.frame, k));
+    captions.push_back(p.caption);
+  }
+  render::PanelStyle st;
+  st.margin = st.gap = text_px / 2;
+  st.caption_px = text_px;
+  st.title_px = text_px * 5 / 4;
+  return render::compose_panel(font, images, captions, rows, cols, shape.title, st, &bar);
+}
+
+}  // namespace app::gallery

@@ -1,0 +1,37 @@
+// A page laid out like a journal's figure, from captured frames: the panels
+// without titles, time stamps or bars of their own, "(a) caption" right
+// above each, one colour bar for all, and text whose digits are at least
+// 1.2 % of the page's width (render/panel.hpp, kFigureTextFraction), so the
+// page stays legible printed at a column's width. The gallery's figures and
+// its side-by-side animation are such pages.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "app/frames.hpp"
+#include "render/font.hpp"
+#include "render/image.hpp"
+#include "sim/scenario.hpp"
+
+namespace app::gallery {
+
+struct FigurePanel {
+  const sim::Scenario* scenario = nullptr;
+  const Frame* frame = nullptr;
+  std::string caption;  // after the panel's letter
+};
+
+struct FigureShape {
+  int panel_width = 960;  // px of each panel's image
+  int cols = 2;
+  std::string title;      // one line over the page ("" : none)
+};
+
+// Field k of every panel's frame in one colour range; `style` and `range`
+// as app::field_style / field_range give them. Throws render::Error.
+render::Image figure_page(render::Font& font, FramePainter& painter,
+                          const std::vector<FigurePanel>& panels, std::size_t k,
+                          const FieldStyle& style, const Range& range, const FigureShape& shape);
+
+}  // namespace app::gallery
