@@ -46,6 +46,9 @@ struct RenderOptions {
   std::optional<std::pair<double, double>> range;  // none: per stage, as the run does
   std::string out;  // a .png file (one state) or a directory; "" : see README
   bool video = false;  // also encode OUT/<field>.mp4 and .gif
+  // Each frame with the run's series plot (RUN/series.csv) beside it, a
+  // marker at the frame's time (app/series_plot.hpp).
+  bool series = false;
 };
 int render_command(const RenderOptions& options);
 

@@ -58,6 +58,9 @@ int main(int argc, char** argv) {
                          "PNG file (one state) or directory (default: DIR/render/FIELD/, or "
                          "STATE-FIELD.png beside a .vtu)");
   render_cmd->add_flag("--video", render.video, "Also encode OUT/FIELD.mp4 and OUT/FIELD.gif");
+  render_cmd->add_flag("--series", render.series,
+                       "Put the run's series plot (RUN/series.csv) beside each frame, marked at "
+                       "its time");
 
   app::PanelOptions panel;
   CLI::App* panel_cmd =

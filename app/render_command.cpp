@@ -17,6 +17,7 @@
 
 #include "app/commands.hpp"
 #include "app/frames.hpp"
+#include "app/series_plot.hpp"
 #include "render/error.hpp"
 #include "render/font.hpp"
 #include "render/panel.hpp"
@@ -111,7 +112,24 @@ struct Job {
   std::vector<fs::path> files;
   fs::path out;
   bool out_is_file = false;
+  std::vector<SeriesRow> series;  // with --series
 };
+
+// --series: RUN/series.csv, RUN being the run directory given or the one
+// whose vtk/ holds the .vtu file.
+std::vector<SeriesRow> run_series(const fs::path& in) {
+  std::error_code ec;
+  fs::path run = fs::is_directory(in, ec) ? in : in.parent_path();
+  if (run.filename() == "vtk") run = run.parent_path();
+  const fs::path file = run / "series.csv";
+  if (!fs::is_regular_file(file, ec))
+    throw BadInput("--series: " + file.string() + ": no such file (landslide run writes it)");
+  try {
+    return read_series(file);
+  } catch (const SeriesError& e) {
+    throw BadInput(std::string("--series: ") + e.what());
+  }
+}
 
 Job prepare(const RenderOptions& o) {
   Job job;
@@ -175,6 +193,7 @@ Job prepare(const RenderOptions& o) {
     std::string why;
     if (!render::ffmpeg_available(&why)) throw BadInput("--video: " + why);
   }
+  if (o.series) job.series = run_series(in);
   return job;
 }
 
@@ -247,9 +266,11 @@ int render_command(const RenderOptions& o) {
   }
 
   std::unique_ptr<FramePainter> painter;
+  std::unique_ptr<render::Font> font;
   try {
     painter = std::make_unique<FramePainter>(job.scenario.output.image_size[0],
                                              job.scenario.output.image_size[1]);
+    if (!job.series.empty()) font = std::make_unique<render::Font>();
   } catch (const std::exception& e) {
     std::cerr << "error: cannot set up the off-screen painter: " << e.what() << '\n';
     return kExitBadInput;
@@ -267,7 +288,13 @@ int render_command(const RenderOptions& o) {
       const render::FrameSpec spec =
           frame_spec(job.scenario, style, job.colour_map, ranges[fr.stage], fr);
       const fs::path path = job.out_is_file ? job.out : job.out / numbered(int(i));
-      render::write_png(painter->paint(spec, fr, 0), path.string());
+      const render::Image& image = painter->paint(spec, fr, 0);
+      if (job.series.empty())
+        render::write_png(image, path.string());
+      else
+        render::write_png(beside_series(*font, image, job.series,
+                                        run_time_of(job.series, fr.stage, fr.time)),
+                          path.string());
     }
     if (job.out_is_file) {
       std::cout << job.out.string() << '\n';

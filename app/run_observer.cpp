@@ -55,7 +55,8 @@ RunObserver::RunObserver(const sim::Scenario& scenario, fs::path out, int thread
       threads_(threads),
       source_(std::move(source)),
       next_checkpoint_(source_.checkpoint_every),
-      recorder_(std::move(recorder)) {
+      recorder_(std::move(recorder)),
+      series_(scenario, out_) {
   for (const sim::StageSpec& s : scenario.stages)
     if (s.type != sim::StageType::MaterialChange && sim::stage_is_painted(scenario, s))
       last_painted_stage_ = s.name;
@@ -67,6 +68,7 @@ void RunObserver::resume(const Checkpoint& c, double time) {
   for (const auto& f : run.at("vtk_files")) vtk_files_.emplace_back(f.at(0), f.at(1));
   states_ = run.at("states");
   wall_before_ = run.at("wall_time_s");
+  series_.resume(run.at("series"));
   if (recorder_) recorder_->resume(c.frames, run.at("pngs_written"));
   const double every = source_.checkpoint_every;
   if (every > 0) next_checkpoint_ = (std::floor(time / every) + 1) * every;
@@ -77,15 +79,19 @@ void RunObserver::stages_restored(const sim::Simulation& sim) {
   for (std::size_t k = 0; k < sim.stage_index(); ++k)
     if (stages[k].type != sim::StageType::MaterialChange && sim.scenario().output.vtk == "stage-end")
       write_state(sim, stages[k], stages[k].name + "-end.vtu", -1);
+  series_.restore(read_series(cached_series_path(source_.state_cache, sim.scenario())));
+  series_.write();
   write_summary(sim, "running");
 }
 
 void RunObserver::stage_begins(const sim::Simulation& sim, const sim::StageSpec& stage) {
   progress_.update(stage.name, sim.stage_time(), stage.duration, 0);
+  series_.stage_begins(sim, stage);
 }
 
 void RunObserver::frame(const sim::Simulation& sim, const sim::StageSpec& stage, int frame) {
   if (recorder_) recorder_->capture(sim.world(), sim.stage_time(), frame, stage.name);
+  series_.frame(sim);
   if (sim.scenario().output.vtk == "frames") {
     char name[32];
     std::snprintf(name, sizeof name, "frame-%06d.vtu", frame);
@@ -95,6 +101,7 @@ void RunObserver::frame(const sim::Simulation& sim, const sim::StageSpec& stage,
 
 void RunObserver::progress(const sim::Simulation& sim, const sim::StageSpec& stage, long steps) {
   progress_.update(stage.name, sim.stage_time(), stage.duration, steps);
+  series_.progress(sim, stage);  // before a checkpoint, which keeps the rows
   const double every = source_.checkpoint_every;
   const bool due = every > 0 && sim.time() >= next_checkpoint_;
   if (!due && !interrupt_requested) return;
@@ -105,6 +112,7 @@ void RunObserver::progress(const sim::Simulation& sim, const sim::StageSpec& sta
 
 void RunObserver::stage_ends(const sim::Simulation& sim, const sim::StageSpec& stage,
                              const sim::StageResult& r) {
+  series_.stage_ends(sim, stage, r);
   if (stage.type != sim::StageType::MaterialChange && sim.scenario().output.vtk == "stage-end")
     write_state(sim, stage, stage.name + "-end.vtu", -1);
   std::ostringstream msg;
@@ -117,13 +125,18 @@ void RunObserver::stage_ends(const sim::Simulation& sim, const sim::StageSpec& s
   progress_.finish(msg.str());
   if (!source_.state_cache.empty() && source_.reused_stages == 0 &&
       sim.stage_index() == sim::reusable_stages(sim.scenario()))
-    save_cached_state(source_.state_cache, sim);
+    save_cached_state(source_.state_cache, sim, series_.csv());
   if (recorder_ && recorder_->pending() > 0) paint(stage.name);
   if (recorder_ && stage.name == last_painted_stage_) encode();
   write_summary(sim, "running");
 }
 
 void RunObserver::paint_after_failure(const std::string& stage) {
+  try {
+    series_.write();
+  } catch (const std::exception& e) {
+    std::cerr << "error: writing the series before the failure: " << e.what() << '\n';
+  }
   if (!recorder_) return;
   try {
     if (recorder_->pending() > 0) paint(stage);
@@ -158,10 +171,12 @@ void RunObserver::write_checkpoint(const sim::Simulation& sim) {
   c.run = {{"vtk_files", files},
            {"states", states_},
            {"wall_time_s", wall_time()},
-           {"pngs_written", recorder_ ? recorder_->written() : 0}};
+           {"pngs_written", recorder_ ? recorder_->written() : 0},
+           {"series", series_.bookkeeping()}};
   c.state = sim.save_state();
   if (recorder_) c.frames = recorder_->pending_frames();
   app::write_checkpoint(checkpoint_path(out_), c);
+  series_.write();
   write_summary(sim, "running (checkpoint at t = " + std::to_string(sim.time()) + " s)");
 }
 

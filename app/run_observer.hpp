@@ -1,6 +1,6 @@
 // What `landslide run` and `landslide resume` do while the simulation runs:
-// progress lines, frames, VTK states, the summary after every stage, and
-// checkpoints (every so many simulated seconds, and on Ctrl-C).
+// progress lines, frames, VTK states, the time series (app/series.hpp), the
+// summary after every stage, and checkpoints (every so many simulated seconds, and on Ctrl-C).
 #pragma once
 
 #include <chrono>
@@ -15,6 +15,7 @@
 #include "app/checkpoint.hpp"
 #include "app/frames.hpp"
 #include "app/progress.hpp"
+#include "app/series.hpp"
 #include "render/video.hpp"
 #include "sim/simulation.hpp"
 
@@ -86,6 +87,7 @@ class RunObserver : public sim::Observer {
   std::vector<std::pair<double, std::string>> vtk_files_;
   nlohmann::json states_ = nlohmann::json::array();
   std::unique_ptr<FrameRecorder> recorder_;
+  SeriesRecorder series_;
   std::string last_painted_stage_;
   std::vector<render::VideoFiles> videos_;
 };

@@ -19,9 +19,16 @@ fs::path cached_state_path(const fs::path& dir, const sim::Scenario& scenario) {
   return dir / name;
 }
 
+fs::path cached_series_path(const fs::path& dir, const sim::Scenario& scenario) {
+  fs::path file = cached_state_path(dir, scenario);
+  return file.empty() ? file : file.replace_extension(".series.csv");
+}
+
 std::size_t restore_cached_state(const fs::path& dir, sim::Simulation& sim) {
   const fs::path file = cached_state_path(dir, sim.scenario());
-  if (file.empty() || !fs::exists(file)) return 0;
+  // A state saved without its series (by an older build) is computed again.
+  if (file.empty() || !fs::exists(file) || !fs::exists(cached_series_path(dir, sim.scenario())))
+    return 0;
   std::ifstream in(file, std::ios::binary);
   std::ostringstream bytes;
   bytes << in.rdbuf();
@@ -29,10 +36,14 @@ std::size_t restore_cached_state(const fs::path& dir, sim::Simulation& sim) {
   return sim.stage_index();
 }
 
-void save_cached_state(const fs::path& dir, const sim::Simulation& sim) {
+void save_cached_state(const fs::path& dir, const sim::Simulation& sim,
+                       const std::string& series_csv) {
   const fs::path file = cached_state_path(dir, sim.scenario());
   if (file.empty()) return;
   fs::create_directories(dir);
+  // The series first: a state without one beside it is not used.
+  sim::write_file_atomically(cached_series_path(dir, sim.scenario()).string(),
+                             [&](std::ostream& o) { o << series_csv; });
   const std::string state = sim.save_state();
   sim::write_file_atomically(file.string(), [&](std::ostream& o) {
     o.write(state.data(), std::streamsize(state.size()));

@@ -17,16 +17,9 @@ const char* stage_type_name(sim::StageType t) {
 }
 
 nlohmann::json energy_json(const sim::EnergyBalance& e) {
-  return {{"external_work_J_per_m", e.external_work},
-          {"kinetic_energy_change_J_per_m", e.kinetic_change},
-          {"internal_work_J_per_m", e.internal_work},
-          {"elastic_energy_change_J_per_m", e.elastic_energy_change},
-          {"plastic_dissipation_J_per_m", e.plastic_dissipation},
-          {"damping_loss_J_per_m", e.damping_loss},
-          {"wall_loss_J_per_m", e.wall_loss},
-          {"friction_work_J_per_m", e.friction_work},
-          {"transfer_loss_J_per_m", e.transfer_loss},
-          {"relative_error", e.relative_error}};
+  nlohmann::json out = nlohmann::json::object();
+  for (const auto& [name, value] : energy_terms(e)) out[name] = value;
+  return out;
 }
 
 nlohmann::json metrics_json(const sim::StageMetrics& m) {
@@ -51,6 +44,19 @@ nlohmann::json metrics_json(const sim::StageMetrics& m) {
 }
 
 }  // namespace
+
+std::vector<std::pair<std::string, double>> energy_terms(const sim::EnergyBalance& e) {
+  return {{"external_work_J_per_m", e.external_work},
+          {"kinetic_energy_change_J_per_m", e.kinetic_change},
+          {"internal_work_J_per_m", e.internal_work},
+          {"elastic_energy_change_J_per_m", e.elastic_energy_change},
+          {"plastic_dissipation_J_per_m", e.plastic_dissipation},
+          {"damping_loss_J_per_m", e.damping_loss},
+          {"wall_loss_J_per_m", e.wall_loss},
+          {"friction_work_J_per_m", e.friction_work},
+          {"transfer_loss_J_per_m", e.transfer_loss},
+          {"relative_error", e.relative_error}};
+}
 
 nlohmann::json make_summary(const sim::Simulation& simulation, int threads, double wall_time,
                             const std::string& status) {

@@ -3,11 +3,19 @@
 // valid even if a later stage fails.
 #pragma once
 
+#include <string>
+#include <utility>
+#include <vector>
+
 #include <nlohmann/json.hpp>
 
 #include "sim/simulation.hpp"
 
 namespace app {
+
+// The terms of a stage's energy balance (Eq. 3) under the names summary.json
+// and series.csv give them, in the order of sim::EnergyBalance.
+std::vector<std::pair<std::string, double>> energy_terms(const sim::EnergyBalance& e);
 
 nlohmann::json make_summary(const sim::Simulation& simulation, int threads, double wall_time,
                             const std::string& status);

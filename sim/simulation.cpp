@@ -108,6 +108,22 @@ void Simulation::close_energy_balance(StageResult& r, double kinetic_start,
   e.relative_error = e.external_work != 0 ? residual / std::fabs(e.external_work) : 0.0;
 }
 
+StageResult Simulation::stage_so_far() const {
+  StageResult r = progress_.result;
+  r.simulated_time = stage_time_;
+  if (r.steps == 0) {
+    r.kinetic_energy = kinetic_energy(world_);
+    // The moving velocity is only known from a step: the last one run.
+    for (auto it = results_.rbegin(); it != results_.rend(); ++it)
+      if (it->type != StageType::MaterialChange) {
+        r.moving_kinetic_energy = it->moving_kinetic_energy;
+        break;
+      }
+  }
+  close_energy_balance(r, progress_.kinetic_start, progress_.elastic_start);
+  return r;
+}
+
 // The watchdog (sim/watchdog.hpp): a non-finite sum stops the run at once; a
 // full scan every kWatchdogScanSteps steps checks every point and, if all
 // are within the limits, keeps the state as the last good one.
@@ -139,10 +155,10 @@ void Simulation::begin_timed_stage(const StageSpec& stage, Observer& observer) {
     world_.points.ref_x = world_.points.x;
     world_.points.ref_y = world_.points.y;
   }
-  observer.stage_begins(*this, stage);
   p.max_signal = max_signal_speed(world_);
   p.kinetic_start = kinetic_energy(world_);
   p.elastic_start = elastic_energy(world_);
+  observer.stage_begins(*this, stage);  // with the energy balance's start in place
   last_good_ = save_state(std::move(last_good_));
   last_good_time_ = time_;
 }

@@ -72,6 +72,13 @@ class Simulation {
   double stage_time() const { return stage_time_; }  // since the start of this stage
   const std::vector<StageResult>& results() const { return results_; }
   std::size_t stage_index() const { return stage_index_; }  // the stage running or next
+  // The timed stage running now as stage_ends would report it if it ended
+  // here: its sums so far, its energy balance (Eq. 3) closed at the present
+  // state, the kinetic energies of the last step (before the first step of
+  // a stage: the total taken from the points, the moving one of the last
+  // step before it). Metrics are left empty (measure_stage when needed).
+  // Call it between steps of a timed stage (from frame() or progress()).
+  StageResult stage_so_far() const;
 
  private:
   void run_timed_stage(const StageSpec& stage, Observer& observer);

@@ -7,47 +7,24 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
 #include "app/commands.hpp"
+#include "block_scene.hpp"
 #include "render/video.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
-
-// A soil block settling and slumping for 1.5 s of simulated time: long
-// enough for the test to see a checkpoint before the run ends.
-const char* const kScene = R"json({
-  "name": "checkpoint-block",
-  "description": "App test: a block settling, then slumping after losing its cohesion.",
-  "domain": {"min": [0, 0], "max": [4, 3]},
-  "grid": {"cell_size": 0.25, "padding_cells": 2, "points_per_cell": 2},
-  "gravity": [0, -9.81],
-  "boundaries": {"left": "roller", "right": "roller", "bottom": "fixed", "top": "free"},
-  "materials": {
-    "block": {"model": "mohr-coulomb", "density": 2000, "youngs_modulus": 2e7,
-              "poisson_ratio": 0.25, "cohesion": 5000, "friction_angle": 30,
-              "dilation_angle": 0, "critical_density": 1900}
-  },
-  "bodies": [{"name": "block", "material": "block", "rectangle": {"min": [1, 0], "max": [3, 1.5]}}],
-  "time_step": {"courant": 0.5},
-  "stages": [
-    {"name": "settle", "type": "gravity", "duration": 0.5, "ramp_fraction": 0.5, "damping": 0.01},
-    {"name": "soften", "type": "material-change", "material": "block", "set": {"cohesion": 0}},
-    {"name": "slump", "type": "dynamic", "duration": 1.0}
-  ],
-  "output": {"frame_interval": 0.1, "frame_stages": ["slump"],
-             "fields": ["displacement-x"], "colour_map": "viridis", "vtk": "stage-end",
-             "image_size": [160, 90]}
-})json";
 
 std::string read_bytes(const fs::path& p) {
   std::ifstream in(p, std::ios::binary);
@@ -86,7 +63,8 @@ int run_and_stop(const fs::path& scene, const fs::path& out, int signal) {
 }
 
 // Every output file of `a` is in `b` with the same bytes (summary.json aside:
-// it holds wall times).
+// it holds wall times), series.csv among them: a resumed run neither loses
+// nor repeats a row.
 void expect_same_outputs(const fs::path& a, const fs::path& b) {
   int files = 0;
   for (const auto& e : fs::recursive_directory_iterator(a)) {
@@ -96,7 +74,8 @@ void expect_same_outputs(const fs::path& a, const fs::path& b) {
     ASSERT_TRUE(fs::exists(b / rel)) << rel;
     EXPECT_TRUE(read_bytes(e.path()) == read_bytes(b / rel)) << rel << " differs";
   }
-  EXPECT_GE(files, 12);  // 11 frames, 2 states, .pvd, states.json, mp4, gif
+  EXPECT_TRUE(fs::exists(a / "series.csv") && fs::exists(a / "series.png"));
+  EXPECT_GE(files, 12);  // 11 frames, 2 states, .pvd, states.json, mp4, gif, series
   EXPECT_FALSE(fs::exists(b / "checkpoint.lsck")) << "a finished run keeps no checkpoint";
 }
 
@@ -108,7 +87,7 @@ class Checkpoints : public ::testing::Test {
     fs::remove_all(root_);
     fs::create_directories(root_);
     scene_ = root_ / "block.json";
-    std::ofstream(scene_) << kScene;
+    std::ofstream(scene_) << kSlumpingBlock;
     app::RunOptions o;
     o.scenario = scene_.string();
     o.out_dir = (root_ / "whole").string();
@@ -146,8 +125,15 @@ TEST_F(Checkpoints, CtrlCWritesACheckpointAndExits130) {
       << summary.at("status");
   EXPECT_EQ(resume(cut), app::kExitOk);
   expect_same_outputs(root_ / "whole", cut);
-  // The run saved its gravity stage for the next scene that shares it.
-  EXPECT_EQ(std::distance(fs::directory_iterator(root_ / "cache"), fs::directory_iterator()), 1);
+  // The run saved its gravity stage, and that stage's series, for the next
+  // scene that shares it.
+  std::vector<std::string> cached;
+  for (const auto& e : fs::directory_iterator(root_ / "cache"))
+    cached.push_back(e.path().filename().string());
+  std::sort(cached.begin(), cached.end());
+  ASSERT_EQ(cached.size(), 2u);
+  EXPECT_EQ(cached[0].substr(cached[0].size() - 11), ".series.csv");
+  EXPECT_EQ(cached[0].substr(0, cached[0].size() - 11) + ".state", cached[1]);
 }
 
 TEST_F(Checkpoints, AReusedGravityStageGivesTheSameOutputs) {
