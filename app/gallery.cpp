@@ -19,6 +19,7 @@
 #include "app/gallery_figure.hpp"
 #include "app/gallery_observer.hpp"
 #include "app/gallery_parts.hpp"
+#include "app/series_plot.hpp"
 #include "render/error.hpp"
 #include "render/font.hpp"
 #include "render/png_io.hpp"
@@ -67,9 +68,11 @@ class Gallery {
       if (st.type == sim::StageType::Dynamic) stages.push_back(st.name);
     s.output.frame_stages = stages;
     std::unique_ptr<FrameRecorder> recorder;
+    std::unique_ptr<SeriesRecorder> series;
     const fs::path work = out_ / ".work" / s.name;
     if (animate) {
       recorder = std::make_unique<FrameRecorder>(s, work);
+      series = std::make_unique<SeriesRecorder>(s, work);
       fs::create_directories(work);
       recorder->start();
     }
@@ -78,7 +81,7 @@ class Gallery {
     r->points = simulation.world().points.size();
     std::cerr << "running " << s.name << " (" << r->points << " points, h = " << s.cell_size
               << " m)\n";
-    GalleryObserver observer(*r, recorder.get());
+    GalleryObserver observer(*r, recorder.get(), series.get());
     share_gravity_stage(simulation, observer);
     try {
       simulation.run(observer);
@@ -111,6 +114,8 @@ class Gallery {
                              v.gif.empty() ? "" : (out_ / (base + ".gif")).string()});
       }
       std::cerr << "  encoded the animation in " << fmt(seconds_since(v0)) << " s\n";
+      series->write();
+      r->series = read_series(work / "series.csv");
       fs::remove_all(work);
     }
     run_wall_ += r->wall;
@@ -140,7 +145,21 @@ class Gallery {
     shape.cols = panels.size() >= 4 ? 2 : 1;
     shape.title = title;
     render::Font font;
-    render::write_png(gallery::figure_page(font, painter(), page, k, style, range, shape),
+    render::write_png(gallery::figure_page(font, painter(), page, k, style, range, shape).image,
+                      (out_ / file).string());
+  }
+
+  // The slide's end beside the run's time series (app/series_plot.hpp), the
+  // frame as `landslide run` paints it.
+  void with_series(const std::string& file, const RunResult& r) {
+    if (r.series.empty()) return;
+    const FieldStyle style = field_style(Field::DisplacementX, r.scenario);
+    const Range range = field_range(style, {&r.slide_end.values[0]});
+    const render::FrameSpec spec =
+        frame_spec(r.scenario, style, r.scenario.output.colour_map, range, r.slide_end);
+    render::Font font;
+    const double t = run_time_of(r.series, r.slide_end.stage, r.slide_end.time);
+    render::write_png(beside_series(font, painter().paint(spec, r.slide_end, 0), r.series, t),
                       (out_ / file).string());
   }
 
@@ -303,6 +322,9 @@ int gallery_command(const GalleryOptions& o) {
                {"0 hydrostatic, 1 on the yield surface, 2 yielded in the last step; house 0; " +
                 pts(r) + note},
                Field::RelativeYield);
+    });
+    timed("series-paper-slope-phi20.png", [&] {
+      g.with_series("series-paper-slope-phi20.png", g.run("paper-slope-phi20.json", true));
     });
     timed("fig11-resolutions.png", [&] {
       std::vector<std::pair<const RunResult*, const Frame*>> panels;

@@ -91,7 +91,7 @@ std::vector<render::VideoFiles> write_side_by_side(const std::vector<const RunRe
     shape.title = title + ", t = " + fmt(t) + " s";
     for (const auto& [dir, width] : {std::pair{frames, kPanelWidth}, {gif_frames, kGifPanelWidth}}) {
       shape.panel_width = width;
-      render::write_png(figure_page(font, painter, panels, 0, style, range, shape),
+      render::write_png(figure_page(font, painter, panels, 0, style, range, shape).image,
                         (dir / frame_name(page)).string());
     }
   }

@@ -44,9 +44,9 @@ int page_width(int panel_w, int cols, int gap, int margin, int bar_w) {
 
 }  // namespace
 
-render::Image figure_page(render::Font& font, FramePainter& painter,
-                          const std::vector<FigurePanel>& panels, std::size_t k,
-                          const FieldStyle& style, const Range& range, const FigureShape& shape) {
+FigurePage figure_page(render::Font& font, FramePainter& painter,
+                       const std::vector<FigurePanel>& panels, std::size_t k,
+                       const FieldStyle& style, const Range& range, const FigureShape& shape) {
   const int n = int(panels.size());
   const int cols = std::min(shape.cols, n);
   const int rows = (n + cols - 1) / cols;
@@ -79,7 +79,8 @@ render::Image figure_page(render::Font& font, FramePainter& painter,
   st.margin = st.gap = text_px / 2;
   st.caption_px = text_px;
   st.title_px = text_px * 5 / 4;
-  return render::compose_panel(font, images, captions, rows, cols, shape.title, st, &bar);
+  return FigurePage{render::compose_panel(font, images, captions, rows, cols, shape.title, st, &bar),
+                    text_px};
 }
 
 }  // namespace app::gallery

@@ -28,10 +28,15 @@ struct FigureShape {
   std::string title;      // one line over the page ("" : none)
 };
 
+struct FigurePage {
+  render::Image image;
+  int text_px = 0;  // the size of every text on it (the title's is 5/4 of it)
+};
+
 // Field k of every panel's frame in one colour range; `style` and `range`
 // as app::field_style / field_range give them. Throws render::Error.
-render::Image figure_page(render::Font& font, FramePainter& painter,
-                          const std::vector<FigurePanel>& panels, std::size_t k,
-                          const FieldStyle& style, const Range& range, const FigureShape& shape);
+FigurePage figure_page(render::Font& font, FramePainter& painter,
+                       const std::vector<FigurePanel>& panels, std::size_t k,
+                       const FieldStyle& style, const Range& range, const FigureShape& shape);
 
 }  // namespace app::gallery

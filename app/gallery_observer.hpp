@@ -12,6 +12,7 @@
 
 #include "app/frames.hpp"
 #include "app/gallery_parts.hpp"
+#include "app/series.hpp"
 #include "sim/simulation.hpp"
 
 namespace app::gallery {
@@ -29,7 +30,13 @@ const std::vector<double> kSlideTimes = {3, 4, 8, 12, 16};
 
 class GalleryObserver : public sim::Observer {
  public:
-  GalleryObserver(RunResult& r, FrameRecorder* recorder) : r_(r), recorder_(recorder) {}
+  // `series` (may be null) records the run's time series.
+  GalleryObserver(RunResult& r, FrameRecorder* recorder, SeriesRecorder* series = nullptr)
+      : r_(r), recorder_(recorder), series_(series) {}
+
+  void stage_begins(const sim::Simulation& sim, const sim::StageSpec& stage) override {
+    if (series_) series_->stage_begins(sim, stage);
+  }
 
   // Saves the state into `saved` when the run has finished its first
   // `stages` stages, for the next scene that shares them.
@@ -40,6 +47,7 @@ class GalleryObserver : public sim::Observer {
 
   void frame(const sim::Simulation& sim, const sim::StageSpec& stage, int frame) override {
     if (recorder_) recorder_->capture(sim.world(), sim.stage_time(), frame, stage.name);
+    if (series_) series_->frame(sim);
     if (stage.type != sim::StageType::Dynamic) return;
     r_.last = capture_frame(sim.world(), kFields, frame, sim.stage_time(), stage.name);
     r_.has_last = true;
@@ -52,6 +60,7 @@ class GalleryObserver : public sim::Observer {
 
   void stage_ends(const sim::Simulation& sim, const sim::StageSpec& stage,
                   const sim::StageResult& res) override {
+    if (series_) series_->stage_ends(sim, stage, res);
     if (stage.type == sim::StageType::Gravity)
       r_.gravity_end = capture_frame(sim.world(), kFields, 0, sim.stage_time(), stage.name);
     if (stage.type == sim::StageType::Dynamic) {
@@ -66,6 +75,7 @@ class GalleryObserver : public sim::Observer {
   }
 
   void progress(const sim::Simulation& sim, const sim::StageSpec& stage, long steps) override {
+    if (series_) series_->progress(sim, stage);
     if (std::chrono::steady_clock::now() - last_ < std::chrono::seconds(10)) return;
     last_ = std::chrono::steady_clock::now();
     std::cerr << "  " << sim.scenario().name << ": " << stage.name << " t = " << sim.stage_time()
@@ -75,6 +85,7 @@ class GalleryObserver : public sim::Observer {
  private:
   RunResult& r_;
   FrameRecorder* recorder_;
+  SeriesRecorder* series_;
   std::size_t save_after_ = 0;
   std::string* saved_ = nullptr;
   std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "app/frames.hpp"
+#include "app/series.hpp"
 #include "render/video.hpp"
 #include "sim/scenario.hpp"
 
@@ -29,6 +30,7 @@ struct RunResult {
   // Every slide frame (every 0.5 s), displacement-x only: the side-by-side
   // animation paints them after all its runs have ended, with one range.
   std::vector<Frame> slide_frames;
+  std::vector<SeriesRow> series;  // of an animated run (app/series.hpp)
   std::string failed;  // why the run failed ("" : it did not)
   std::vector<render::VideoFiles> videos;
 };

@@ -105,7 +105,9 @@ TEST_F(SeriesRun, CsvHasItsHeaderAndRowsInIncreasingTimeAndThePngDecodes) {
   const std::vector<app::SeriesRow> rows = app::read_series(out_ / "series.csv");
   std::vector<double> settle, slump;
   for (std::size_t k = 0; k < rows.size(); ++k) {
-    if (k > 0) EXPECT_GE(rows[k].time, rows[k - 1].time) << "row " << k;
+    if (k > 0) {
+      EXPECT_GE(rows[k].time, rows[k - 1].time) << "row " << k;
+    }
     (rows[k].stage == "settle" ? settle : slump).push_back(rows[k].at(app::kStageTime));
     EXPECT_TRUE(rows[k].stage == "settle" || rows[k].stage == "slump") << rows[k].stage;
   }
