@@ -114,6 +114,25 @@ FrameLayout layout_frame(Font& font, const FrameSpec& spec) {
   return L;
 }
 
+int fit_frame_height(Font& font, FrameSpec spec) {
+  const double aspect = (spec.world_y1 - spec.world_y0) / (spec.world_x1 - spec.world_x0);
+  if (!(aspect > 0) || !std::isfinite(aspect))
+    throw InvalidArgument("world window of zero or non-finite size");
+  // The margins depend on the height (text scales with the image), so look
+  // for the height they leave the window's own aspect at: a few passes settle it.
+  int h = std::clamp(spec.width, kMinFrameSide, kMaxFrameSide);
+  for (int pass = 0; pass < 8; ++pass) {
+    spec.height = h;
+    const FrameLayout L = layout_frame(font, spec);
+    const int margins = h - L.plot_area.h;
+    const int plot = std::max(16, int(std::ceil(L.plot_area.w * aspect - 1e-9)));
+    const int want = std::clamp(margins + plot, kMinFrameSide, kMaxFrameSide);
+    if (want == h) break;
+    h = want;
+  }
+  return h;
+}
+
 namespace {
 
 // Pixel column/row of a 1 px tick at edge position p inside [lo, hi]. Ticks

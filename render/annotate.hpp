@@ -25,6 +25,13 @@ struct FrameLayout {
 // InvalidArgument if the image is too small to hold the annotations.
 FrameLayout layout_frame(Font& font, const FrameSpec& spec);
 
+// The image height at which spec's world window fills the plot's width
+// with the margins layout_frame() leaves for this spec.width (spec.height is
+// ignored), in [kMinFrameSide, kMaxFrameSide]. Throws InvalidArgument if no
+// height holds the annotations.
+constexpr int kMinFrameSide = 64, kMaxFrameSide = 8192;
+int fit_frame_height(Font& font, FrameSpec spec);
+
 void draw_annotations(Image& img, Font& font, const FrameLayout& layout,
                       const FrameSpec& spec, const ColourMap& cmap);
 
