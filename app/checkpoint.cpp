@@ -12,38 +12,20 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// "LSCHECK" and a format version (2: frames carry their material ids).
+// "LSCHECK" and a format version.
 constexpr std::uint64_t kMagic = 0x4c53434845434b02ULL;
+// Every frame of a run can be pending (they are painted at the end): at most
+// 100000 per stage, so a bound far above any real run.
+constexpr std::uint64_t kMaxPending = 100000000;
 
-void put_frame(sim::BinaryWriter& w, const Frame& f) {
-  w.put(f.number);
-  w.put(f.time);
-  w.put_string(f.stage);
-  w.put_vector(f.x);
-  w.put_vector(f.y);
-  w.put_vector(f.half);
-  w.put(std::uint64_t(f.values.size()));
-  for (const std::vector<float>& v : f.values) w.put_vector(v);
-  w.put_vector(f.material);
+void put_extent(sim::BinaryWriter& w, const Extent& e) {
+  for (const double v : {e.x0, e.x1, e.y0, e.y1}) w.put(v);
 }
 
-Frame get_frame(sim::BinaryReader& r) {
-  Frame f;
-  f.number = r.get<int>();
-  f.time = r.get<double>();
-  f.stage = r.get_string();
-  f.x = r.get_vector<float>();
-  f.y = r.get_vector<float>(f.x.size(), "a frame's y");
-  f.half = r.get_vector<float>(f.x.size(), "a frame's sizes");
-  const auto fields = r.get<std::uint64_t>();
-  if (fields > 64) r.fail("a frame with " + std::to_string(fields) + " fields");
-  for (std::uint64_t k = 0; k < fields; ++k)
-    f.values.push_back(r.get_vector<float>(f.x.size(), "a frame's values"));
-  f.material = r.get_vector<std::uint8_t>();
-  if (!f.material.empty() && f.material.size() != f.x.size())
-    r.fail("a frame with " + std::to_string(f.material.size()) + " material ids for " +
-           std::to_string(f.x.size()) + " points");
-  return f;
+Extent get_extent(sim::BinaryReader& r) {
+  Extent e;
+  for (double* v : {&e.x0, &e.x1, &e.y0, &e.y1}) *v = r.get<double>();
+  return e;
 }
 
 }  // namespace
@@ -58,7 +40,11 @@ void write_checkpoint(const fs::path& file, const Checkpoint& c) {
   w.put_string(c.run.dump());
   w.put_string(c.state);
   w.put(std::uint64_t(c.frames.size()));
-  for (const Frame& f : c.frames) put_frame(w, f);
+  for (const PendingFrame& f : c.frames) {
+    w.put(f.number);
+    w.put_string(f.stage);
+  }
+  put_extent(w, c.extent);
   sim::write_file_atomically(file.string(), [&](std::ostream& o) {
     o.write(w.bytes().data(), std::streamsize(w.bytes().size()));
   });
@@ -85,8 +71,14 @@ Checkpoint read_checkpoint(const fs::path& file) {
   }
   c.state = r.get_string();
   const auto frames = r.get<std::uint64_t>();
-  if (frames > 100000) r.fail(std::to_string(frames) + " pending frames");
-  for (std::uint64_t k = 0; k < frames; ++k) c.frames.push_back(get_frame(r));
+  if (frames > kMaxPending) r.fail(std::to_string(frames) + " pending frames");
+  for (std::uint64_t k = 0; k < frames; ++k) {
+    PendingFrame f;
+    f.number = r.get<int>();
+    f.stage = r.get_string();
+    c.frames.push_back(f);
+  }
+  c.extent = get_extent(r);
   if (!r.at_end()) r.fail("bytes after the end of the checkpoint");
   return c;
 }

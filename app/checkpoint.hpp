@@ -7,8 +7,11 @@
 //                                        still being there, or unchanged)
 //   the run's own bookkeeping (JSON)    VTK files listed so far, PNGs written
 //   the simulation state                sim::Simulation::save_state()
-//   the frames captured but not painted (a stage is painted when it ends,
-//                                        with one colour range over its frames)
+//   the frames captured but not painted: their numbers and stages, and the
+//                                        extent of all captured frames (the
+//                                        frames themselves are the files in
+//                                        DIR/.frames-pending/, which a run
+//                                        keeps until it paints them)
 #pragma once
 
 #include <filesystem>
@@ -26,7 +29,8 @@ struct Checkpoint {
   std::string scenario_file;  // as given to `landslide run`, for messages
   nlohmann::json run;         // the observer's bookkeeping
   std::string state;          // sim::Simulation::save_state()
-  std::vector<Frame> frames;  // captured, not yet painted
+  std::vector<PendingFrame> frames;  // captured and spilled, not yet painted
+  Extent extent;                     // of every frame captured so far
 };
 
 std::filesystem::path checkpoint_path(const std::filesystem::path& out_dir);

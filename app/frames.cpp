@@ -4,10 +4,8 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
-#include <regex>
 #include <stdexcept>
 
-#include "render/png_io.hpp"
 #include "sim/mohr_coulomb.hpp"
 
 namespace app {
@@ -126,12 +124,6 @@ Frame capture(const P& p, const std::vector<Field>& fields, int number, double t
   return fr;
 }
 
-std::string frame_file(int number) {
-  char name[32];
-  std::snprintf(name, sizeof name, "%06d.png", number);
-  return name;
-}
-
 }  // namespace
 
 std::vector<double> field_values(Field f, const sim::World& world) {
@@ -171,39 +163,6 @@ Frame capture_frame(const sim::PointState& state,
   return capture(StatePoints{state, materials}, fields, number, time, stage);
 }
 
-
-Window frame_window(const sim::Scenario& s) {
-  const double w = s.domain_max[0] - s.domain_min[0];
-  const double h = s.domain_max[1] - s.domain_min[1];
-  const double margin = std::max(0.03 * std::max(w, h), s.cell_size);
-  return Window{s.domain_min[0] - margin, s.domain_max[0] + margin, s.domain_min[1] - margin,
-                s.domain_max[1] + margin};
-}
-
-render::FrameSpec frame_spec(const sim::Scenario& scenario, const FieldStyle& style,
-                             const std::string& colour_map, const Range& range,
-                             const Frame& frame) {
-  render::FrameSpec spec;
-  spec.width = scenario.output.image_size[0];
-  spec.height = scenario.output.image_size[1];
-  const Window w = frame_window(scenario);
-  spec.world_x0 = w.x0;
-  spec.world_x1 = w.x1;
-  spec.world_y0 = w.y0;
-  spec.world_y1 = w.y1;
-  spec.colour_map = style.categorical ? "categorical" : colour_map;
-  const DisplayUnit shown = display_unit(style, range);
-  spec.range_lo = range.lo;
-  spec.range_hi = range.hi;
-  spec.bar_scale = shown.scale;
-  if (style.categorical) spec.bar_names = style.names;
-  spec.title = scenario.name + " \u2014 " + style.title;
-  if (!frame.stage.empty()) spec.title += " (" + frame.stage + ")";
-  spec.field_label = style.label;
-  spec.unit = shown.unit;
-  spec.time = frame.time;
-  return spec;
-}
 
 FramePainter::FramePainter(int width, int height)
     : painter_(std::make_unique<render::Painter>(width, height)) {}
@@ -249,74 +208,6 @@ std::vector<sim::MaterialConstants> materials_at_stage(const sim::Scenario& scen
   std::vector<sim::MaterialConstants> out;
   for (const sim::MaterialSpec& m : specs) out.push_back(sim::make_material_constants(m));
   return out;
-}
-
-FrameRecorder::FrameRecorder(const sim::Scenario& scenario, fs::path out_dir)
-    : scenario_(scenario),
-      out_(std::move(out_dir)),
-      painter_(scenario.output.image_size[0], scenario.output.image_size[1]) {
-  for (const std::string& name : scenario.output.fields) {
-    fields_.push_back(parse_field(name));
-    styles_.push_back(field_style(fields_.back(), scenario));
-  }
-}
-
-fs::path FrameRecorder::frames_dir(Field f) const { return out_ / "frames" / field_name(f); }
-
-void FrameRecorder::start() {
-  if (started_) return;
-  static const std::regex numbered(R"(\d{6}\.png)");
-  for (const Field f : fields_) {
-    const fs::path dir = frames_dir(f);
-    fs::create_directories(dir);
-    for (const fs::directory_entry& e : fs::directory_iterator(dir))
-      if (e.is_regular_file() && std::regex_match(e.path().filename().string(), numbered))
-        fs::remove(e.path());
-  }
-  started_ = true;
-}
-
-void FrameRecorder::resume(std::vector<Frame> frames, int written) {
-  for (const Field f : fields_) fs::create_directories(frames_dir(f));
-  started_ = true;
-  frames_ = std::move(frames);
-  written_ = written;
-}
-
-void FrameRecorder::capture(const sim::World& world, double stage_time, int number,
-                            const std::string& stage) {
-  frames_.push_back(capture_frame(world, fields_, number, stage_time, stage));
-}
-
-int FrameRecorder::paint_pending() {
-  start();
-  int written = 0;
-  for (std::size_t k = 0; k < fields_.size(); ++k) {
-    const Range range = field_range(styles_[k], frames_, k);
-    const fs::path dir = frames_dir(fields_[k]);
-    for (const Frame& fr : frames_) {
-      const render::FrameSpec spec =
-          frame_spec(scenario_, styles_[k], scenario_.output.colour_map, range, fr);
-      render::write_png(painter_.paint(spec, fr, k), (dir / frame_file(fr.number)).string());
-      ++written;
-    }
-  }
-  frames_.clear();
-  frames_.shrink_to_fit();
-  written_ += written;
-  return written;
-}
-
-std::vector<render::VideoFiles> FrameRecorder::encode_videos() {
-  std::vector<render::VideoFiles> files;
-  if (written_ == 0) return files;
-  const render::VideoOptions options = video_options(scenario_.output.frame_interval);
-  for (const Field f : fields_) {
-    const fs::path dir = frames_dir(f);
-    if (render::count_frames(dir.string()) < 2) continue;  // no video of a single frame
-    files.push_back(render::encode_video(dir.string(), out_.string(), field_name(f), options));
-  }
-  return files;
 }
 
 }  // namespace app

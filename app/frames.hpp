@@ -1,12 +1,14 @@
 // Painted output of a run: the scalar fields of the points, frames captured
-// in memory while a stage runs, and their painting (PNG per field and frame,
-// then an mp4 and a gif per field) with one colour range per stage.
+// (and spilled to disk) while the run goes on, the view they share, and their
+// painting (PNG per field and frame, then an mp4 and a gif per field) with
+// one colour range per stage.
 //
 // The same code paints a live sim::World (`landslide run`) and a saved VTK
 // state (`landslide render`): both are captured into a Frame first, so a
 // re-painted state gives the same pixels as the run did.
 #pragma once
 
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
@@ -14,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "render/font.hpp"
 #include "render/frame_spec.hpp"
 #include "render/image.hpp"
 #include "render/painter.hpp"
@@ -116,14 +119,44 @@ struct DisplayUnit {
 };
 DisplayUnit display_unit(const FieldStyle& style, const Range& range);
 
-// The world window of every frame of a run: the scenario's domain plus a
-// margin of 3% of its larger side (at least one cell).
+// A world window [m].
 struct Window {
   double x0 = 0, x1 = 1, y0 = 0, y1 = 1;
 };
+// The scenario's domain plus a margin of 3% of its larger side (at least one
+// cell): the largest view a run paints unless output.view names another.
 Window frame_window(const sim::Scenario& scenario);
 
+// The region the painted squares of some frames cover (x +- kSquareFill *
+// half, non-finite points left out); empty until a frame with a point is added.
+struct Extent {
+  double x0 = HUGE_VAL, x1 = -HUGE_VAL, y0 = HUGE_VAL, y1 = -HUGE_VAL;
+  void add(const Frame& frame);
+  bool empty() const { return !(x0 <= x1 && y0 <= y1); }
+};
+
+// The world window a run paints: output.view when the scenario gives one;
+// otherwise `material` plus kViewMargin of its larger side (at least one
+// cell) each side, clipped to frame_window(); frame_window() itself when
+// nothing was captured.
+constexpr double kViewMargin = 0.05;
+Window view_window(const sim::Scenario& scenario, const Extent& material);
+
+// The window and the image size every frame of a run shares: image_size's
+// width, and its height, or for "auto" the height at which `window` fills
+// the plot's width (render::fit_frame_height, for a colour bar of 0 .. 1).
+struct FrameView {
+  Window window;
+  int width = 1280, height = 720;
+};
+FrameView frame_view(const sim::Scenario& scenario, const Window& window, render::Font& font);
+
 // Title "<scenario> — <field title> (<stage>)", time stamp "t = 4.00 s".
+render::FrameSpec frame_spec(const sim::Scenario& scenario, const FieldStyle& style,
+                             const std::string& colour_map, const Range& range,
+                             const Frame& frame, const FrameView& view);
+// A frame painted outside a run (the gallery's figures, which compare scenes
+// in one window): the domain's frame_window().
 render::FrameSpec frame_spec(const sim::Scenario& scenario, const FieldStyle& style,
                              const std::string& colour_map, const Range& range,
                              const Frame& frame);
@@ -135,6 +168,8 @@ class FramePainter {
   // Throws render::Error if OSMesa or the font cannot be set up.
   FramePainter(int width, int height);
   const render::Image& paint(const render::FrameSpec& spec, const Frame& frame, std::size_t k);
+  render::Font& font() { return painter_->font(); }
+  const render::FrameLayout& last_layout() const { return painter_->last_layout(); }
 
  private:
   std::unique_ptr<render::Painter> painter_;
@@ -151,43 +186,71 @@ render::VideoOptions video_options(double frame_interval);
 // one timed stage named in frame_stages.
 bool paints_frames(const sim::Scenario& scenario);
 
-// Collects a run's frames while a stage runs and paints them when it ends:
-//   DIR/frames/<field>/000123.png  (numbers continue across stages)
-//   DIR/<field>.mp4, DIR/<field>.gif  (every frame of the run, after the last painted stage)
+// A frame captured and spilled to disk, not painted yet.
+struct PendingFrame {
+  int number = 0;
+  std::string stage;
+};
+
+// Collects a run's frames and paints them once the view over all of them is
+// known:
+//   DIR/.frames-pending/000123.frame  one file per captured frame, while the
+//                                     run goes on (app/frame_file.hpp)
+//   DIR/frames/<field>/000123.png     (numbers continue across stages)
+//   DIR/<field>.mp4, DIR/<field>.gif  (every frame of the run)
+// Memory holds one captured frame at a time; painting reads the files back
+// (and, for the colour range of a stage, one field of that stage's frames).
 class FrameRecorder {
  public:
   // Sets up the painter (throws render::Error). Check ffmpeg before.
   FrameRecorder(const sim::Scenario& scenario, std::filesystem::path out_dir);
 
   // Creates DIR/frames/<field>/ and removes numbered PNGs an earlier run
-  // left there (they would join this run's videos). Call once the output
-  // directory exists; paint_pending() calls it if nobody did.
+  // left there (they would join this run's videos), and an earlier run's
+  // spilled frames. Call once the output directory exists; paint_pending()
+  // calls it if nobody did.
   void start();
   void capture(const sim::World& world, double stage_time, int number, const std::string& stage);
-  std::size_t pending() const { return frames_.size(); }
-  // Paints the captured frames with their own ranges, writes the PNGs and
-  // frees the frames. Returns the number of PNG files written.
+  std::size_t pending() const { return pending_.size(); }
+  // Bytes of captured frames held in memory (the one being spilled).
+  std::size_t bytes_in_memory() const { return scratch_.bytes(); }
+  // Paints every pending frame in the view over all of them, with one colour
+  // range per stage, writes the PNGs, and removes the spilled files and
+  // their folder. Returns the number of PNG files written.
   int paint_pending();
   // mp4 + gif of each field from every frame this run wrote (none if it
   // painted fewer than two frames).
   std::vector<render::VideoFiles> encode_videos();
   std::filesystem::path frames_dir(Field f) const;
+  // OUT/.gif-frames/<field>/: the frames painted at the GIF's width, until
+  // encode_videos() has made the GIF.
+  std::filesystem::path gif_dir(Field f) const;
+  std::filesystem::path spill_dir() const { return out_ / ".frames-pending"; }
   const std::vector<Field>& fields() const { return fields_; }
 
-  // For checkpoints: the captured frames not yet painted and the PNGs
-  // written so far; resume() takes them back in a resumed run (and keeps the
-  // PNGs of the stopped run, which start() would remove).
-  const std::vector<Frame>& pending_frames() const { return frames_; }
+  // For checkpoints: the frames spilled and not yet painted, the extent of
+  // every frame captured, and the PNGs written so far. resume() takes them
+  // back in a resumed run: it keeps the listed files (throws sim::StateError
+  // naming one that is missing), removes files captured after the
+  // checkpoint (the resumed run captures them again), and keeps the PNGs of
+  // the stopped run, which start() would remove.
+  const std::vector<PendingFrame>& pending_frames() const { return pending_; }
+  const Extent& extent() const { return extent_; }
   int written() const { return written_; }
-  void resume(std::vector<Frame> frames, int written);
+  void resume(std::vector<PendingFrame> frames, const Extent& extent, int written);
 
  private:
+  std::filesystem::path spill_file(int number) const;
+  std::vector<Range> stage_ranges(const std::vector<const PendingFrame*>& frames) const;
+
   const sim::Scenario& scenario_;
   std::filesystem::path out_;
   std::vector<Field> fields_;
   std::vector<FieldStyle> styles_;
   FramePainter painter_;
-  std::vector<Frame> frames_;
+  std::vector<PendingFrame> pending_;
+  Extent extent_;
+  Frame scratch_;  // the frame being captured
   bool started_ = false;
   int written_ = 0;
 };

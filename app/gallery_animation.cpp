@@ -76,6 +76,10 @@ std::vector<render::VideoFiles> write_side_by_side(const std::vector<const RunRe
   const fs::path frames = work / "frames", gif_frames = work / "gif-frames";
   fs::create_directories(frames);
   fs::create_directories(gif_frames);
+  std::vector<const Frame*> all;
+  for (const RunResult* r : runs)
+    for (const Frame& f : r->slide_frames) all.push_back(&f);
+  const Window window = figure_window(runs.front()->scenario, all);
   FramePainter painter(kPanelWidth, 300);
   render::Font font;
   for (int page = 0; page < pages; ++page) {
@@ -88,6 +92,7 @@ std::vector<render::VideoFiles> write_side_by_side(const std::vector<const RunRe
     }
     FigureShape shape;
     shape.cols = cols;
+    shape.window = window;
     shape.title = title + ", t = " + fmt(t) + " s";
     for (const auto& [dir, width] : {std::pair{frames, kPanelWidth}, {gif_frames, kGifPanelWidth}}) {
       shape.panel_width = width;

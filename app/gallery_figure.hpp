@@ -6,6 +6,7 @@
 // its side-by-side animation are such pages.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -26,7 +27,14 @@ struct FigureShape {
   int panel_width = 960;  // px of each panel's image
   int cols = 2;
   std::string title;      // one line over the page ("" : none)
+  // The world window of every panel; none: the material's extent in these
+  // panels (an animation passes one window for all its pages).
+  std::optional<Window> window;
 };
+
+// The material's extent in `frames` plus the runs' margin (app::view_window),
+// not any one scene's own output.view: panels of several scenes compare.
+Window figure_window(const sim::Scenario& scenario, const std::vector<const Frame*>& frames);
 
 struct FigurePage {
   render::Image image;

@@ -269,10 +269,21 @@ int render_command(const RenderOptions& o) {
   std::unique_ptr<render::Font> font;
   try {
     painter = std::make_unique<FramePainter>(job.scenario.output.image_size[0],
-                                             job.scenario.output.image_size[1]);
+                                             std::max(64, job.scenario.output.image_size[1]));
     if (!job.series.empty()) font = std::make_unique<render::Font>();
   } catch (const std::exception& e) {
     std::cerr << "error: cannot set up the off-screen painter: " << e.what() << '\n';
+    return kExitBadInput;
+  }
+  // The run's view: the material's extent over the states painted here
+  // (the run's own frames, when its output.vtk was "frames").
+  Extent extent;
+  for (const Frame& f : frames) extent.add(f);
+  FrameView view;
+  try {
+    view = frame_view(job.scenario, view_window(job.scenario, extent), painter->font());
+  } catch (const std::exception& e) {
+    std::cerr << "error: " << e.what() << '\n';
     return kExitBadInput;
   }
 
@@ -286,7 +297,7 @@ int render_command(const RenderOptions& o) {
     for (std::size_t i = 0; i < frames.size(); ++i) {
       const Frame& fr = frames[i];
       const render::FrameSpec spec =
-          frame_spec(job.scenario, style, job.colour_map, ranges[fr.stage], fr);
+          frame_spec(job.scenario, style, job.colour_map, ranges[fr.stage], fr, view);
       const fs::path path = job.out_is_file ? job.out : job.out / numbered(int(i));
       const render::Image& image = painter->paint(spec, fr, 0);
       if (job.series.empty())

@@ -135,7 +135,7 @@ int execute(RunSetup& r) {
     if (r.checkpoint)
       observer->resume(*r.checkpoint, simulation->time());
     else
-      observer->remove_checkpoint();  // an earlier run's: `resume` must not pick it up
+      observer->start_fresh();
     if (r.source.reused_stages > 0) observer->stages_restored(*simulation);
     catch_interrupt();
     simulation->run(*observer);

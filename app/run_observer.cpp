@@ -60,6 +60,10 @@ RunObserver::RunObserver(const sim::Scenario& scenario, fs::path out, int thread
   for (const sim::StageSpec& s : scenario.stages)
     if (s.type != sim::StageType::MaterialChange && sim::stage_is_painted(scenario, s))
       last_painted_stage_ = s.name;
+}
+
+void RunObserver::start_fresh() {
+  remove_checkpoint();  // an earlier run's: `resume` must not pick it up
   if (recorder_) recorder_->start();
 }
 
@@ -69,7 +73,9 @@ void RunObserver::resume(const Checkpoint& c, double time) {
   states_ = run.at("states");
   wall_before_ = run.at("wall_time_s");
   series_.resume(run.at("series"));
-  if (recorder_) recorder_->resume(c.frames, run.at("pngs_written"));
+  if (recorder_) recorder_->resume(c.frames, c.extent, run.at("pngs_written"));
+  next_state_ = run.at("next_state");
+  last_state_time_ = run.at("last_state_time_s");
   const double every = source_.checkpoint_every;
   if (every > 0) next_checkpoint_ = (std::floor(time / every) + 1) * every;
 }
@@ -87,6 +93,11 @@ void RunObserver::stages_restored(const sim::Simulation& sim) {
 void RunObserver::stage_begins(const sim::Simulation& sim, const sim::StageSpec& stage) {
   progress_.update(stage.name, sim.stage_time(), stage.duration, 0);
   series_.stage_begins(sim, stage);
+  if (sim.stage_time() == 0) {  // not a stage resumed halfway
+    next_state_ = 0;
+    last_state_time_ = -1;
+    write_interval_state(sim, stage);
+  }
 }
 
 void RunObserver::frame(const sim::Simulation& sim, const sim::StageSpec& stage, int frame) {
@@ -102,6 +113,7 @@ void RunObserver::frame(const sim::Simulation& sim, const sim::StageSpec& stage,
 void RunObserver::progress(const sim::Simulation& sim, const sim::StageSpec& stage, long steps) {
   progress_.update(stage.name, sim.stage_time(), stage.duration, steps);
   series_.progress(sim, stage);  // before a checkpoint, which keeps the rows
+  write_interval_state(sim, stage);
   const double every = source_.checkpoint_every;
   const bool due = every > 0 && sim.time() >= next_checkpoint_;
   if (!due && !interrupt_requested) return;
@@ -115,6 +127,10 @@ void RunObserver::stage_ends(const sim::Simulation& sim, const sim::StageSpec& s
   series_.stage_ends(sim, stage, r);
   if (stage.type != sim::StageType::MaterialChange && sim.scenario().output.vtk == "stage-end")
     write_state(sim, stage, stage.name + "-end.vtu", -1);
+  // A stage that ended between two state times still leaves its end.
+  if (stage.type != sim::StageType::MaterialChange && sim.scenario().output.vtk == "interval" &&
+      last_state_time_ < sim.stage_time())
+    write_interval_state(sim, stage, true);
   std::ostringstream msg;
   msg << stage.name << ": done";
   if (stage.type != sim::StageType::MaterialChange) {
@@ -126,8 +142,12 @@ void RunObserver::stage_ends(const sim::Simulation& sim, const sim::StageSpec& s
   if (!source_.state_cache.empty() && source_.reused_stages == 0 &&
       sim.stage_index() == sim::reusable_stages(sim.scenario()))
     save_cached_state(source_.state_cache, sim, series_.csv());
-  if (recorder_ && recorder_->pending() > 0) paint(stage.name);
-  if (recorder_ && stage.name == last_painted_stage_) encode();
+  // Every frame is painted once the last painted stage has captured its
+  // frames: the view is the region the material covers in all of them.
+  if (recorder_ && stage.name == last_painted_stage_) {
+    if (recorder_->pending() > 0) paint(stage.name);
+    encode();
+  }
   write_summary(sim, "running");
 }
 
@@ -172,9 +192,14 @@ void RunObserver::write_checkpoint(const sim::Simulation& sim) {
            {"states", states_},
            {"wall_time_s", wall_time()},
            {"pngs_written", recorder_ ? recorder_->written() : 0},
-           {"series", series_.bookkeeping()}};
+           {"series", series_.bookkeeping()},
+           {"next_state", next_state_},
+           {"last_state_time_s", last_state_time_}};
   c.state = sim.save_state();
-  if (recorder_) c.frames = recorder_->pending_frames();
+  if (recorder_) {
+    c.frames = recorder_->pending_frames();
+    c.extent = recorder_->extent();
+  }
   app::write_checkpoint(checkpoint_path(out_), c);
   series_.write();
   write_summary(sim, "running (checkpoint at t = " + std::to_string(sim.time()) + " s)");
@@ -198,6 +223,21 @@ void RunObserver::encode() {
   videos_ = recorder_->encode_videos();
   if (!videos_.empty())
     std::cerr << "encoded " << videos_.size() << " videos in " << seconds_since(start) << " s\n";
+}
+
+// With vtk = "interval": the state at the first step that reaches each
+// multiple of vtk_interval in the stage (the steps stay as they are, so the
+// run does not depend on it), and with `end` the stage's last state.
+void RunObserver::write_interval_state(const sim::Simulation& sim, const sim::StageSpec& stage,
+                                       bool end) {
+  const sim::OutputSpec& o = sim.scenario().output;
+  if (o.vtk != "interval" || stage.type == sim::StageType::MaterialChange) return;
+  if (!end && sim.stage_time() < double(next_state_) * o.vtk_interval) return;
+  char name[32];
+  std::snprintf(name, sizeof name, "state-%06zu.vtu", vtk_files_.size());
+  write_state(sim, stage, name, -1);
+  next_state_ = std::lround(std::floor(sim.stage_time() / o.vtk_interval)) + 1;
+  last_state_time_ = sim.stage_time();
 }
 
 // The .vtu file, the .pvd collection, and vtk/states.json: which stage each

@@ -1,6 +1,7 @@
 // What `landslide run` and `landslide resume` do while the simulation runs:
-// progress lines, frames, VTK states, the time series (app/series.hpp), the
-// summary after every stage, and checkpoints (every so many simulated seconds, and on Ctrl-C).
+// progress lines, frames, VTK states (at stage ends, frames or an interval),
+// the time series (app/series.hpp), the summary after every stage, and
+// checkpoints (every so many simulated seconds, and on Ctrl-C).
 #pragma once
 
 #include <chrono>
@@ -47,6 +48,9 @@ class RunObserver : public sim::Observer {
   RunObserver(const sim::Scenario& scenario, std::filesystem::path out, int threads,
               std::unique_ptr<FrameRecorder> recorder, RunSource source);
 
+  // A run that is not resumed: removes an earlier run's checkpoint, its
+  // numbered frames and its spilled frames.
+  void start_fresh();
   // A resumed run: the checkpoint's bookkeeping and pending frames, and the
   // simulated time it was written at. Throws nlohmann::json::exception if
   // the bookkeeping lacks an entry.
@@ -75,6 +79,8 @@ class RunObserver : public sim::Observer {
   void encode();
   void write_state(const sim::Simulation& sim, const sim::StageSpec& stage,
                    const std::string& name, int frame);
+  void write_interval_state(const sim::Simulation& sim, const sim::StageSpec& stage,
+                            bool end = false);
   double wall_time() const;
 
   std::filesystem::path out_;
@@ -85,6 +91,8 @@ class RunObserver : public sim::Observer {
   double wall_before_ = 0;  // of the run before it was resumed
   double next_checkpoint_ = 0;
   std::vector<std::pair<double, std::string>> vtk_files_;
+  long next_state_ = 0;          // vtk = "interval": the next state at this * vtk_interval
+  double last_state_time_ = -1;  // stage time of the stage's last such state
   nlohmann::json states_ = nlohmann::json::array();
   std::unique_ptr<FrameRecorder> recorder_;
   SeriesRecorder series_;

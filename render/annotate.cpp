@@ -97,13 +97,23 @@ FrameLayout layout_frame(Font& font, const FrameSpec& spec) {
   return L;
 }
 
-int height_for_width(Font& font, FrameSpec spec) {
-  // Laid out in a frame tall enough that the width decides the scale, the
-  // plot area keeps a spare band of (plot height - box height) rows.
-  spec.height = std::max(64, 4 * spec.width);
-  if (spec.text_px == 0) spec.text_px = frame_text_px(spec.width, spec.height);
-  const FrameLayout L = layout_frame(font, spec);
-  return std::max(64, spec.height - (L.plot_area.h - L.box.h));
+int fit_frame_height(Font& font, FrameSpec spec) {
+  const double aspect = (spec.world_y1 - spec.world_y0) / (spec.world_x1 - spec.world_x0);
+  if (!(aspect > 0) || !std::isfinite(aspect))
+    throw InvalidArgument("world window of zero or non-finite size");
+  // The margins depend on the height (text scales with the image), so look
+  // for the height they leave the window's own aspect at: a few passes settle it.
+  int h = std::clamp(spec.width, kMinFrameSide, kMaxFrameSide);
+  for (int pass = 0; pass < 8; ++pass) {
+    spec.height = h;
+    const FrameLayout L = layout_frame(font, spec);
+    const int margins = h - L.plot_area.h;
+    const int plot = std::max(16, int(std::ceil(L.plot_area.w * aspect - 1e-9)));
+    const int want = std::clamp(margins + plot, kMinFrameSide, kMaxFrameSide);
+    if (want == h) break;
+    h = want;
+  }
+  return h;
 }
 
 namespace {

@@ -28,9 +28,12 @@ struct FrameLayout {
 // InvalidArgument if the image is too small to hold the annotations.
 FrameLayout layout_frame(Font& font, const FrameSpec& spec);
 
-// The image height at which spec's world window, fitted to its width, fills
-// the plot with no blank band above or below (its width, text and bar kept).
-int height_for_width(Font& font, FrameSpec spec);
+// The image height at which spec's world window fills the plot's width
+// with the margins layout_frame() leaves for this spec.width (spec.height is
+// ignored), in [kMinFrameSide, kMaxFrameSide]. Throws InvalidArgument if no
+// height holds the annotations.
+constexpr int kMinFrameSide = 64, kMaxFrameSide = 8192;
+int fit_frame_height(Font& font, FrameSpec spec);
 
 void draw_annotations(Image& img, Font& font, const FrameLayout& layout, const FrameSpec& spec);
 

@@ -94,7 +94,11 @@ void draw_colour_bar(Image& img, Font& font, const Rect& r, const ColourBarSpec&
     widest_label = std::max(widest_label, t.w);
   }
   if (s.label.empty()) return;
-  const TextMask m = rotate_ccw(font.render(s.label, s.label_px));
+  // A label longer than the bar is set smaller rather than run past its ends
+  // (into the time stamp above, or off a small frame).
+  int px = s.label_px;
+  while (px > 6 && font.text_width(s.label, px) > r.h) --px;
+  const TextMask m = rotate_ccw(font.render(s.label, px));
   draw_mask(img, m, r.right() + 1 + s.tick_len + 2 * s.gap + widest_label, r.y + r.h / 2,
             HAlign::Left, VAlign::Middle, kInk);
 }

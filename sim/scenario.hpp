@@ -90,14 +90,23 @@ struct StageSpec {
   std::vector<MaterialChange> changes;  // material-change
 };
 
+// image_size's height when it is "auto".
+constexpr int kAutoHeight = 0;
+
 struct OutputSpec {
   double frame_interval = 0;              // s of simulated time; 0: no frames
   std::vector<std::string> frame_stages;  // names of stages that are painted
   std::vector<std::string> fields;        // fields painted at each frame
   std::string colour_map = "viridis";     // "viridis" | "jet"
   std::string displacement_reference = "initial";  // "initial" | "stage-start"
-  std::string vtk = "none";               // "none" | "stage-end" | "frames"
-  std::array<int, 2> image_size = {1280, 720};
+  std::string vtk = "none";               // "none" | "stage-end" | "frames" | "interval"
+  double vtk_interval = 0;                // s of stage time, with vtk = "interval"
+  // Painted frames' size; a height of kAutoHeight ("auto") follows the view.
+  std::array<int, 2> image_size = {1280, kAutoHeight};
+  // The world window painted, when the scenario fixes it; otherwise the
+  // material's extent over the painted stages (app::view_window).
+  bool has_view = false;
+  Vec2 view_min{}, view_max{};
   // Colour range per field, SI units; a field not named here is painted with
   // its range over each painted stage.
   std::map<std::string, std::array<double, 2>> ranges;

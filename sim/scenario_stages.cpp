@@ -100,6 +100,22 @@ StageSpec parse_stage(const Node& node, std::vector<MaterialSpec>& materials) {
   return s;
 }
 
+// [width, height] or [width, "auto"], in pixels.
+std::array<int, 2> parse_image_size(const Node& size) {
+  const char* what = "[width, height] or [width, \"auto\"] in pixels";
+  if (!size.value.is_array() || size.value.size() != 2) fail(size, what);
+  const int width = integer(size.at(0), 64, 8192);
+  const Node height = size.at(1);
+  const char* what_height = "an integer in [64, 8192] or \"auto\"";
+  if (height.value.is_string()) {
+    if (height.value.get<std::string>() != "auto") fail(height, what_height);
+    return {width, kAutoHeight};
+  }
+  const double h = height.value.is_number() ? height.value.get<double>() : 0;
+  if (!(h >= 64 && h <= 8192 && h == std::floor(h))) fail(height, what_height);
+  return {width, static_cast<int>(h)};
+}
+
 }  // namespace
 
 std::vector<StageSpec> parse_stages(const Node& node, const std::vector<MaterialSpec>& materials) {
@@ -119,17 +135,19 @@ std::vector<StageSpec> parse_stages(const Node& node, const std::vector<Material
 
 OutputSpec parse_output(const Node& node, const std::vector<StageSpec>& stages) {
   require_object(node, {"frame_interval", "frame_stages", "fields", "colour_map", "ranges",
-                        "displacement_reference", "vtk", "image_size"});
+                        "displacement_reference", "vtk", "vtk_interval", "image_size",
+                        "view"});
   OutputSpec o;
+  // At most kMaxFrames frames (or states) per stage, so a tiny interval cannot stall a run.
+  double longest = 0;
+  for (const StageSpec& s : stages) longest = std::max(longest, s.duration);
+  const std::string per_stage = "at least the longest stage / " +
+                                std::to_string(static_cast<long>(kMaxFrames)) +
+                                " s (at most that many per stage)";
   if (node.has("frame_interval")) {
     o.frame_interval = non_negative(node.at("frame_interval"));
-    // At most kMaxFrames frames per stage, so a tiny interval cannot stall a run.
-    double longest = 0;
-    for (const StageSpec& s : stages) longest = std::max(longest, s.duration);
     if (o.frame_interval > 0 && longest / o.frame_interval > kMaxFrames)
-      fail(node.at("frame_interval"), "0 (no frames) or at least the longest stage / " +
-                                          std::to_string(static_cast<long>(kMaxFrames)) +
-                                          " s (at most that many frames per stage)");
+      fail(node.at("frame_interval"), "0 (no frames) or " + per_stage);
   }
   if (node.has("frame_stages")) {
     const Node list = node.at("frame_stages");
@@ -177,11 +195,23 @@ OutputSpec parse_output(const Node& node, const std::vector<StageSpec>& stages) 
   if (node.has("colour_map")) o.colour_map = one_of(node.at("colour_map"), {"viridis", "jet"});
   if (node.has("displacement_reference"))
     o.displacement_reference = one_of(node.at("displacement_reference"), {"initial", "stage-start"});
-  if (node.has("vtk")) o.vtk = one_of(node.at("vtk"), {"none", "stage-end", "frames"});
-  if (node.has("image_size")) {
-    const Node size = node.at("image_size");
-    if (!size.value.is_array() || size.value.size() != 2) fail(size, "[width, height] in pixels");
-    o.image_size = {integer(size.at(0), 64, 8192), integer(size.at(1), 64, 8192)};
+  if (node.has("vtk")) o.vtk = one_of(node.at("vtk"), {"none", "stage-end", "frames", "interval"});
+  if (o.vtk == "interval") {
+    const Node every = required(node, "vtk_interval", "required when vtk is \"interval\"");
+    o.vtk_interval = positive(every);
+    if (longest / o.vtk_interval > kMaxFrames) fail(every, per_stage);
+  } else if (node.has("vtk_interval")) {
+    fail(node.at("vtk_interval"), "no vtk_interval unless vtk is \"interval\"");
+  }
+  if (node.has("image_size")) o.image_size = parse_image_size(node.at("image_size"));
+  if (node.has("view")) {
+    const Node view = node.at("view");
+    require_object(view, {"min", "max"});
+    o.view_min = vec2(required(view, "min"));
+    o.view_max = vec2(required(view, "max"));
+    if (!(o.view_max[0] > o.view_min[0] && o.view_max[1] > o.view_min[1]))
+      fail(view.at("max"), "max > min in x and y");
+    o.has_view = true;
   }
   return o;
 }

@@ -123,7 +123,8 @@ std::uint64_t stage_prefix_key(const Scenario& scenario, std::size_t stages);
 
 // How many leading stages of a scenario another scenario can share: up to
 // and including its first gravity stage, if none of them is painted (a
-// reused stage paints no frames); 0 if there is no such stage.
+// reused stage paints no frames) and no VTK state is written at an interval
+// (nor does it write those); 0 if there is no such stage.
 std::size_t reusable_stages(const Scenario& scenario);
 
 }  // namespace sim

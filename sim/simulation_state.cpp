@@ -148,6 +148,7 @@ std::size_t reusable_stages(const Scenario& s) {
   for (std::size_t k = 0; k < s.stages.size(); ++k) {
     const StageSpec& st = s.stages[k];
     if (stage_is_painted(s, st)) return 0;
+    if (s.output.vtk == "interval") return 0;  // nor writes the states of its steps
     if (st.type == StageType::Gravity) return k + 1;
   }
   return 0;

@@ -12,6 +12,7 @@
 #include <string>
 
 #include "app/commands.hpp"
+#include "tests/app/tiny_block.hpp"
 #include "app/frames.hpp"
 #include "render/image_diff.hpp"
 #include "render/png_io.hpp"
@@ -21,37 +22,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// A soil block resting on the floor with an elastic cap, under full gravity
-// from the start (no gravity stage): it settles and rings. Two painted
-// stages around a material change, so frame numbers continue across stages.
-const char* const kScene = R"json({
-  "name": "tiny-block",
-  "description": "App test: a Mohr-Coulomb block and an elastic cap settling.",
-  "domain": {"min": [0, 0], "max": [4, 3]},
-  "grid": {"cell_size": 0.5, "padding_cells": 2, "points_per_cell": 2},
-  "gravity": [0, -9.81],
-  "boundaries": {"left": "roller", "right": "roller", "bottom": "fixed", "top": "free"},
-  "materials": {
-    "block": {"model": "mohr-coulomb", "density": 2000, "youngs_modulus": 2e7,
-              "poisson_ratio": 0.25, "cohesion": 5000, "friction_angle": 30,
-              "dilation_angle": 0, "critical_density": 1900},
-    "cap": {"model": "linear-elastic", "density": 500, "youngs_modulus": 2e7,
-            "poisson_ratio": 0.25}
-  },
-  "bodies": [
-    {"name": "block", "material": "block", "rectangle": {"min": [1, 0], "max": [3, 1]}},
-    {"name": "cap", "material": "cap", "rectangle": {"min": [1.5, 1], "max": [2.5, 1.5]}}
-  ],
-  "time_step": {"courant": 0.5},
-  "stages": [
-    {"name": "settle", "type": "dynamic", "duration": 0.2},
-    {"name": "soften", "type": "material-change", "material": "block", "set": {"cohesion": 0}},
-    {"name": "slump", "type": "dynamic", "duration": 0.1}
-  ],
-  "output": {"frame_interval": 0.05, "frame_stages": ["settle", "slump"],
-             "fields": ["displacement-y", "relative-yield", "velocity", "material"],
-             "colour_map": "viridis", "vtk": "frames", "image_size": [320, 180]}
-})json";
+// A soil block and an elastic cap settling, then slumping (tiny_block.hpp).
+const char* const kScene = apptest::kTinyBlock;
 
 const std::vector<std::string> kFields = {"displacement-y", "relative-yield", "velocity",
                                           "material"};
@@ -162,6 +134,7 @@ TEST_F(RunFrames, StatesJsonNamesStageAndFrame) {
 
 TEST_F(RunFrames, NothingHalfWritten) {
   EXPECT_EQ(temporaries(root_), std::vector<std::string>{});
+  EXPECT_FALSE(fs::exists(out_ / ".frames-pending")) << "the spilled frames outlive the run";
 }
 
 TEST_F(RunFrames, RenderReproducesEveryFrameOfEveryField) {
@@ -313,6 +286,7 @@ TEST(RunCommand, FailedRunStillPaintsWhatItCaptured) {
   // The watchdog hands over the state from before the failure: here the
   // initial one.
   EXPECT_TRUE(fs::is_regular_file(root / "out" / "vtk" / "last-good.vtu"));
+  EXPECT_FALSE(fs::exists(root / "out" / ".frames-pending"));
   EXPECT_EQ(temporaries(root), std::vector<std::string>{});
   fs::remove_all(root);
 }

@@ -56,16 +56,6 @@ TEST(FrameText, DigitsAtLeastTwelvePixelsTallAt480AndScaleWithWidth) {
   }
 }
 
-TEST(FrameText, HeightForWidthLeavesNoBlankBand) {
-  Font font;
-  FrameSpec s;
-  s.world_x1 = 116, s.world_y1 = 20;
-  s.height = height_for_width(font, s);
-  const FrameLayout L = layout_frame(font, s);
-  EXPECT_LE(L.plot_area.h - L.box.h, 1);
-  EXPECT_LE(L.plot_area.w - L.box.w, 1);
-}
-
 TEST(FrameText, NoHeadingRowWithoutTitleOrTime) {
   Font font;
   FrameSpec s;

@@ -35,6 +35,8 @@ TEST(ScenarioDocs, CompleteExampleIsValid) {
   EXPECT_EQ(s.stages.size(), 3u);
   EXPECT_EQ(s.output.ranges.size(), 1u);  // every output key appears in the example
   EXPECT_EQ(s.output.colour_map, "jet");
+  EXPECT_TRUE(s.output.has_view);
+  EXPECT_EQ(s.output.image_size[1], sim::kAutoHeight);
 }
 
 TEST(ScenarioDocs, CommittedScenesFollowTheDocumentedRules) {

@@ -55,7 +55,46 @@ const std::vector<BadCase>& bad_cases() {
         "damping, stop_at_rest)"}},
       {"UnknownOutputKey", [](Json& d) { d["output"]["format"] = "png"; },
        {"output.format: unknown key (allowed: frame_interval, frame_stages, fields, colour_map, "
-        "ranges, displacement_reference, vtk, image_size)"}},
+        "ranges, displacement_reference, vtk, vtk_interval, image_size, view)"}},
+      {"ViewMaxBelowMin",
+       [](Json& d) { d["output"]["view"] = {{"min", {10, 0}}, {"max", {5, 20}}}; },
+       {"output.view.max = [5,20]: expected max > min in x and y"}},
+      {"ViewMissingMax", [](Json& d) { d["output"]["view"] = {{"min", {10, 0}}}; },
+       {"output.view.max: missing (required)"}},
+      {"ViewUnknownKey",
+       [](Json& d) { d["output"]["view"] = {{"min", {0, 0}}, {"max", {5, 5}}, {"zoom", 2}}; },
+       {"output.view.zoom: unknown key (allowed: min, max)"}},
+      {"ViewNotAPoint",
+       [](Json& d) { d["output"]["view"] = {{"min", {0, 0}}, {"max", {5}}}; },
+       {"output.view.max = [5]: expected"}},
+      {"ImageHeightWord", [](Json& d) { d["output"]["image_size"] = {1280, "tall"}; },
+       {"output.image_size[1] = \"tall\": expected an integer in [64, 8192] or \"auto\""}},
+      {"ImageWidthAuto", [](Json& d) { d["output"]["image_size"] = {"auto", 720}; },
+       {"output.image_size[0] = \"auto\": expected an integer in [64, 8192]"}},
+      {"ImageTooSmall", [](Json& d) { d["output"]["image_size"] = {1280, 32}; },
+       {"output.image_size[1] = 32: expected an integer in [64, 8192] or \"auto\""}},
+      {"ImageOneSide", [](Json& d) { d["output"]["image_size"] = {1280}; },
+       {"output.image_size = [1280]: expected [width, height] or [width, \"auto\"] in pixels"}},
+      {"VtkIntervalMissing", [](Json& d) { d["output"]["vtk"] = "interval"; },
+       {"output.vtk_interval: missing (required when vtk is \"interval\")"}},
+      {"VtkIntervalZero",
+       [](Json& d) {
+         d["output"]["vtk"] = "interval";
+         d["output"]["vtk_interval"] = 0;
+       },
+       {"output.vtk_interval = 0: expected a number in (0, inf)"}},
+      {"VtkIntervalTooSmall",
+       [](Json& d) {
+         d["output"]["vtk"] = "interval";
+         d["output"]["vtk_interval"] = 1e-5;
+       },
+       {"output.vtk_interval = 1e-05: expected at least the longest stage / 100000 s"}},
+      {"VtkIntervalWithoutInterval",
+       [](Json& d) {
+         d["output"]["vtk"] = "stage-end";
+         d["output"]["vtk_interval"] = 0.5;
+       },
+       {"output.vtk_interval = 0.5: expected no vtk_interval unless vtk is \"interval\""}},
       {"RangeLowNotBelowHigh", [](Json& d) { d["output"]["ranges"] = {{"velocity", {2, 2}}}; },
        {"output.ranges.velocity = [2,2]: expected [low, high], low < high"}},
       {"RangeOfCategoricalField",

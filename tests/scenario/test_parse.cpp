@@ -196,7 +196,25 @@ TEST(ScenarioParse, OutputDefaultsWhenEmpty) {
   EXPECT_EQ(s.output.colour_map, "viridis");
   EXPECT_EQ(s.output.displacement_reference, "initial");
   EXPECT_EQ(s.output.vtk, "none");
-  EXPECT_EQ(s.output.image_size, (std::array<int, 2>{1280, 720}));
+  EXPECT_EQ(s.output.vtk_interval, 0);
+  // The height follows the view: "auto".
+  EXPECT_EQ(s.output.image_size, (std::array<int, 2>{1280, sim::kAutoHeight}));
+  EXPECT_FALSE(s.output.has_view);
+}
+
+TEST(ScenarioParse, ViewAutoHeightAndVtkInterval) {
+  nlohmann::json doc = example_json();
+  doc["output"]["view"] = {{"min", {5, -1}}, {"max", {45.5, 16}}};
+  doc["output"]["image_size"] = {960, "auto"};
+  doc["output"]["vtk"] = "interval";
+  doc["output"]["vtk_interval"] = 0.25;
+  const sim::Scenario s = parse(doc);
+  EXPECT_TRUE(s.output.has_view);
+  EXPECT_EQ(s.output.view_min, (sim::Vec2{5, -1}));
+  EXPECT_EQ(s.output.view_max, (sim::Vec2{45.5, 16}));
+  EXPECT_EQ(s.output.image_size, (std::array<int, 2>{960, sim::kAutoHeight}));
+  EXPECT_EQ(s.output.vtk, "interval");
+  EXPECT_EQ(s.output.vtk_interval, 0.25);
 }
 
 TEST(ScenarioParse, SameMaterialBodiesMayOverlap) {
