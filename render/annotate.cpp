@@ -73,7 +73,8 @@ FrameLayout layout_frame(Font& font, const FrameSpec& spec) {
     }
     L.map = fit_window(window, L.plot_area);
     L.box = L.map.box();
-    L.y_ticks = nice_ticks(window.y0, window.y1, std::max(2, L.box.h / px(45)));
+    // At least three intervals: two would put 0 and 20 m on a 0..18 m window.
+    L.y_ticks = nice_ticks(window.y0, window.y1, std::max(3, L.box.h / px(45)));
     // Fewer x ticks until neighbouring labels keep a clear gap.
     for (int n = std::max(2, L.box.w / px(80)); n >= 1; --n) {
       L.x_ticks = nice_ticks(window.x0, window.x1, n);

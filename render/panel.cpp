@@ -60,7 +60,7 @@ std::vector<std::string> wrap_text(Font& font, const std::string& text, int px, 
 }
 
 PanelLayout layout_panel(Font& font, const std::vector<Image>& images, int rows, int cols,
-                         bool has_title, int caption_lines, const PanelStyle& st,
+                         int title_lines, int caption_lines, const PanelStyle& st,
                          const Image* colour_bar) {
   check_grid(images, rows, cols, st);
   PanelLayout L;
@@ -68,7 +68,7 @@ PanelLayout layout_panel(Font& font, const std::vector<Image>& images, int rows,
     L.cell_w = std::max(L.cell_w, img.width());
     L.cell_h = std::max(L.cell_h, img.height());
   }
-  const int title_h = has_title ? font.line_height(st.title_px) + st.gap : 0;
+  const int title_h = title_lines > 0 ? title_lines * font.line_height(st.title_px) + st.gap : 0;
   const int caption_h = caption_lines > 0 ? caption_lines * font.line_height(st.caption_px) : 0;
   const int row_h = caption_h + L.cell_h;
   const int grid_w = cols * L.cell_w + (cols - 1) * st.gap;
@@ -76,7 +76,8 @@ PanelLayout layout_panel(Font& font, const std::vector<Image>& images, int rows,
   const int bar_w = colour_bar ? st.gap + colour_bar->width() : 0;
   L.width = 2 * st.margin + grid_w + bar_w;
   L.height = 2 * st.margin + title_h + std::max(grid_h, colour_bar ? colour_bar->height() : 0);
-  if (has_title) L.title = Rect{st.margin, st.margin, L.width - 2 * st.margin, title_h - st.gap};
+  if (title_lines > 0)
+    L.title = Rect{st.margin, st.margin, L.width - 2 * st.margin, title_h - st.gap};
   const int grid_y = st.margin + title_h;
   for (std::size_t i = 0; i < images.size(); ++i) {
     const int r = int(i) / cols, c = int(i) % cols;
@@ -111,13 +112,17 @@ Image compose_panel(Font& font, const std::vector<Image>& images,
     lines.push_back(wrap_text(font, caption_text(st, i, captions[i]), st.caption_px, cell_w));
     most = std::max(most, lines.back().size());
   }
-  const PanelLayout L = layout_panel(font, images, rows, cols, !title.empty(), int(most), st,
-                                     colour_bar);
+  // A title wider than the page is wrapped onto more lines.
+  const int page_w = layout_panel(font, images, rows, cols, 0, int(most), st, colour_bar).width;
+  const std::vector<std::string> title_lines =
+      wrap_text(font, title, st.title_px, std::max(1, page_w - 2 * st.margin));
+  const PanelLayout L = layout_panel(font, images, rows, cols, int(title_lines.size()),
+                                     int(most), st, colour_bar);
   Image page(L.width, L.height, st.background);
-  if (!title.empty()) {
-    font.draw(page, title, st.title_px, L.width / 2, L.title.y, HAlign::Centre, VAlign::Top,
+  for (std::size_t k = 0; k < title_lines.size(); ++k)
+    font.draw(page, title_lines[k], st.title_px, L.width / 2,
+              L.title.y + int(k) * font.line_height(st.title_px), HAlign::Centre, VAlign::Top,
               st.ink);
-  }
   const int line_h = font.line_height(st.caption_px);
   for (std::size_t i = 0; i < images.size(); ++i) {
     page.blit(images[i], L.images[i].x, L.images[i].y);

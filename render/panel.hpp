@@ -45,13 +45,15 @@ constexpr double kFigureTextFraction = 0.012;
 int figure_text_px(Font& font, int page_width, double fraction = kFigureTextFraction);
 
 // Cells are as large as the largest image; smaller images are centred in
-// theirs. `caption_lines`: the caption strip's height in lines (0: none).
+// theirs. `title_lines`, `caption_lines`: the title's and each caption
+// strip's height in lines (0: none).
 // Throws InvalidArgument for an empty grid, too many images or a bad style.
 PanelLayout layout_panel(Font& font, const std::vector<Image>& images, int rows, int cols,
-                         bool has_title, int caption_lines, const PanelStyle& style = {},
+                         int title_lines, int caption_lines, const PanelStyle& style = {},
                          const Image* colour_bar = nullptr);
 
-// Captions (none, or one per image) are wrapped to the cell width; throws
+// Captions (none, or one per image) are wrapped to the cell width, the title
+// to the page's; throws
 // InvalidArgument for a caption count that is neither 0 nor the image count.
 Image compose_panel(Font& font, const std::vector<Image>& images,
                     const std::vector<std::string>& captions, int rows, int cols,

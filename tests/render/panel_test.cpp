@@ -31,8 +31,8 @@ TEST(Panel, SizeAndOffsetsOfATwoByTwoPageWithCaptionsAbove) {
                                    tile(60, 40, 4)};
   PanelStyle st;
   st.margin = 10, st.gap = 8;
-  const Image page = compose_panel(font, imgs, {"", "", "", ""}, 2, 2, "Slope collapse", st);
-  const PanelLayout L = layout_panel(font, imgs, 2, 2, true, 1, st);
+  const Image page = compose_panel(font, imgs, {"", "", "", ""}, 2, 2, "Slope", st);
+  const PanelLayout L = layout_panel(font, imgs, 2, 2, 1, 1, st);
   EXPECT_EQ(page.width(), L.width);
   EXPECT_EQ(page.height(), L.height);
   EXPECT_EQ(L.width, 2 * 10 + 2 * 60 + 8);
@@ -54,6 +54,19 @@ TEST(Panel, FigureTextIsTheSmallestSizeWithTallEnoughDigits) {
   const int px = figure_text_px(font, 2600);
   EXPECT_GE(ink_height(font.render("0123456789", px)), 0.012 * 2600);
   EXPECT_LT(ink_height(font.render("0123456789", px - 1)), 0.012 * 2600);
+}
+
+TEST(Panel, ALongTitleWrapsToThePageWidth) {
+  Font font;
+  const std::vector<Image> imgs = {tile(60, 40, 1)};
+  PanelStyle st;
+  st.margin = 10;
+  const std::string title = "A title much longer than the sixty pixels of the one image";
+  const Image page = compose_panel(font, imgs, {}, 1, 1, title, st);
+  const int lines = int(wrap_text(font, title, st.title_px, 60).size());
+  ASSERT_GE(lines, 2);
+  EXPECT_EQ(page.width(), 80);
+  EXPECT_EQ(page.height(), 20 + lines * font.line_height(st.title_px) + st.gap + 40);
 }
 
 TEST(Panel, LettersRunRowMajor) {
@@ -80,7 +93,7 @@ TEST(Panel, SharedColourBarGoesRightOfTheGrid) {
   PanelStyle st;
   st.margin = 10, st.gap = 8;
   const Image page = compose_panel(font, imgs, {}, 2, 1, "", st, &bar);
-  const PanelLayout L = layout_panel(font, imgs, 2, 1, false, 0, st, &bar);
+  const PanelLayout L = layout_panel(font, imgs, 2, 1, 0, 0, st, &bar);
   EXPECT_EQ(L.width, 10 + 60 + 8 + 12 + 10);
   EXPECT_EQ(L.colour_bar.x, 10 + 60 + 8);
   EXPECT_EQ(L.colour_bar.y, 10 + (2 * 40 + 8 - 70) / 2);
@@ -91,7 +104,7 @@ TEST(Panel, SmallerImagesAreCentredInTheirCell) {
   Font font;
   const std::vector<Image> imgs = {tile(50, 30, 1), tile(30, 10, 2), tile(20, 20, 3)};
   const Image page = compose_panel(font, imgs, {}, 1, 3, "");
-  const PanelLayout L = layout_panel(font, imgs, 1, 3, false, 0);
+  const PanelLayout L = layout_panel(font, imgs, 1, 3, 0, 0);
   EXPECT_EQ(L.cell_w, 50);
   EXPECT_EQ(L.cell_h, 30);
   EXPECT_EQ(L.images[1].x, 16 + 50 + 16 + 10);
