@@ -112,9 +112,8 @@ Range field_range(const FieldStyle& style, const std::vector<Frame>& frames, std
 
 namespace {
 
-// The p-quantile (0..1) of the finite values, nearest rank; NaN for none.
-double quantile(std::vector<float> finite, double p) {
-  if (finite.empty()) return std::numeric_limits<double>::quiet_NaN();
+// The p-quantile (0..1) of the values (reordered), nearest rank.
+double quantile(std::vector<float>& finite, double p) {
   const std::size_t k = std::min(finite.size() - 1, std::size_t(p * double(finite.size())));
   std::nth_element(finite.begin(), finite.begin() + std::ptrdiff_t(k), finite.end());
   return finite[k];
@@ -124,19 +123,18 @@ constexpr double kLowQuantile = 0.01, kHighQuantile = 0.99;
 
 }  // namespace
 
-Range field_range(const FieldStyle& style, const std::vector<const std::vector<float>*>& values) {
+void RangeAccumulator::add(const std::vector<float>& values) {
+  finite_.clear();
+  for (const float v : values)
+    if (std::isfinite(v)) finite_.push_back(v);
+  if (finite_.empty()) return;
+  lo_ = std::min(lo_, quantile(finite_, kLowQuantile));
+  hi_ = std::max(hi_, quantile(finite_, kHighQuantile));
+}
+
+Range RangeAccumulator::range(const FieldStyle& style) const {
   if (style.fixed_range) return Range{style.lo, style.hi};
-  double lo = std::numeric_limits<double>::infinity();
-  double hi = -lo;
-  std::vector<float> finite;
-  for (const std::vector<float>* array : values) {
-    finite.clear();
-    for (const float v : *array)
-      if (std::isfinite(v)) finite.push_back(v);
-    if (finite.empty()) continue;
-    lo = std::min(lo, quantile(finite, kLowQuantile));
-    hi = std::max(hi, quantile(finite, kHighQuantile));
-  }
+  double lo = lo_, hi = hi_;
   if (!(lo <= hi)) {  // no finite value at all
     lo = 0;
     hi = 1;
@@ -159,6 +157,12 @@ Range field_range(const FieldStyle& style, const std::vector<const std::vector<f
     }
   }
   return Range{lo, hi};
+}
+
+Range field_range(const FieldStyle& style, const std::vector<const std::vector<float>*>& values) {
+  RangeAccumulator acc;
+  for (const std::vector<float>* array : values) acc.add(*array);
+  return acc.range(style);
 }
 
 DisplayUnit display_unit(const FieldStyle& style, const Range& range) {

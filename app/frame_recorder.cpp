@@ -93,19 +93,16 @@ void FrameRecorder::capture(const sim::World& world, double stage_time, int numb
   pending_.push_back(PendingFrame{number, stage});
 }
 
-// One range per field over `frames` (one stage), reading one field of those
-// frames at a time.
+// One range per field over `frames` (one stage), reading one frame at a
+// time: memory holds one frame however many the stage has.
 std::vector<Range> FrameRecorder::stage_ranges(const std::vector<const PendingFrame*>& frames) const {
-  std::vector<Range> ranges;
-  for (std::size_t k = 0; k < fields_.size(); ++k) {
-    std::vector<std::vector<float>> values;
-    values.reserve(frames.size());
-    for (const PendingFrame* p : frames)
-      values.push_back(std::move(read_frame_file(spill_file(p->number)).values.at(k)));
-    std::vector<const std::vector<float>*> arrays;
-    for (const std::vector<float>& v : values) arrays.push_back(&v);
-    ranges.push_back(field_range(styles_[k], arrays));
+  std::vector<RangeAccumulator> acc(fields_.size());
+  for (const PendingFrame* p : frames) {
+    const Frame fr = read_frame_file(spill_file(p->number));
+    for (std::size_t k = 0; k < fields_.size(); ++k) acc[k].add(fr.values.at(k));
   }
+  std::vector<Range> ranges;
+  for (std::size_t k = 0; k < fields_.size(); ++k) ranges.push_back(acc[k].range(styles_[k]));
   return ranges;
 }
 

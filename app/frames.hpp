@@ -108,6 +108,17 @@ struct Range {
 Range field_range(const FieldStyle& style, const std::vector<Frame>& frames, std::size_t k);
 // The same over the given value arrays.
 Range field_range(const FieldStyle& style, const std::vector<const std::vector<float>*>& values);
+// The same, one frame's values at a time, so that a stage of many frames
+// never has to be in memory at once.
+class RangeAccumulator {
+ public:
+  void add(const std::vector<float>& values);
+  Range range(const FieldStyle& style) const;
+
+ private:
+  double lo_ = HUGE_VAL, hi_ = -HUGE_VAL;
+  std::vector<float> finite_;
+};
 
 // The unit a range is shown in: displacements under 0.5 m in mm (the
 // gravity stage's settlement of a few mm reads 4, not 0.004), everything
