@@ -10,6 +10,7 @@ out=${2:-out/$(basename "$scenario" .json)}
 build/app/landslide run "$scenario" --out "$out"
 echo "outputs in $out:"
 echo "  summary: $out/summary.json"
+[ -f "$out/series.csv" ] && echo "  time series: $out/series.csv, $out/series.png"
 shopt -s nullglob
 for dir in "$out"/frames/*/; do
   field=$(basename "$dir")
