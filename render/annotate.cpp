@@ -12,12 +12,6 @@ namespace {
 
 constexpr Rgba kInk{30, 30, 30, 255};
 
-int widest(Font& font, const Ticks& t, int px) {
-  int w = 0;
-  for (const auto& s : t.labels) w = std::max(w, font.text_width(s, px));
-  return w;
-}
-
 bool has_heading(const FrameSpec& s) { return s.show_time || !s.title.empty(); }
 
 }  // namespace
@@ -79,7 +73,7 @@ FrameLayout layout_frame(Font& font, const FrameSpec& spec) {
     for (int n = std::max(2, L.box.w / px(80)); n >= 1; --n) {
       L.x_ticks = nice_ticks(window.x0, window.x1, n);
       const double step_px = L.x_ticks.step * L.map.scale();
-      if (step_px >= widest(font, L.x_ticks, L.tick_px) + px(16)) break;
+      if (step_px >= widest_label(font, L.x_ticks, L.tick_px) + px(16)) break;
     }
     int new_room = 0;
     if (spec.show_colour_bar) {
@@ -90,7 +84,7 @@ FrameLayout layout_frame(Font& font, const FrameSpec& spec) {
       L.bar_ticks = colour_bar_ticks(L.bar, bar_h);
       new_room = colour_bar_room(font, L.bar, L.bar_ticks);
     }
-    const int new_y = widest(font, L.y_ticks, L.tick_px);
+    const int new_y = widest_label(font, L.y_ticks, L.tick_px);
     if (new_y <= ytick_w && new_room <= bar_room) break;
     ytick_w = std::max(ytick_w, new_y);
     bar_room = std::max(bar_room, new_room);
@@ -119,28 +113,12 @@ int fit_frame_height(Font& font, FrameSpec spec) {
 
 namespace {
 
-// Pixel column/row of a 1 px tick at edge position p inside [lo, hi]. Ticks
-// at the window's ends go onto the frame lines (lo - 1 and hi) so 0 and the
-// frame coincide on both axes.
-int tick_pos(double p, int lo, int hi) {
-  if (p < lo + 0.5) return lo - 1;
-  if (p > hi - 0.5) return hi;
-  return int(std::floor(p));
-}
-
-void frame(Image& img, const Rect& r, Rgba c) {
-  img.fill_rect(Rect{r.x - 1, r.y - 1, r.w + 2, 1}, c);
-  img.fill_rect(Rect{r.x - 1, r.bottom(), r.w + 2, 1}, c);
-  img.fill_rect(Rect{r.x - 1, r.y - 1, 1, r.h + 2}, c);
-  img.fill_rect(Rect{r.right(), r.y - 1, 1, r.h + 2}, c);
-}
-
 void draw_axes(Image& img, Font& font, const FrameLayout& L, const FrameSpec& spec) {
   const Rect& b = L.box;
-  frame(img, b, kInk);
+  img.frame_rect(b, kInk);
   const int label_top = b.bottom() + 1 + L.tick_len + L.gap;
   for (std::size_t i = 0; i < L.x_ticks.values.size(); ++i) {
-    const int x = tick_pos(L.map.x(L.x_ticks.values[i]), b.x, b.right());
+    const int x = tick_pixel(L.map.x(L.x_ticks.values[i]), b.x, b.right());
     img.fill_rect(Rect{x, b.bottom() + 1, 1, L.tick_len}, kInk);
     font.draw(img, L.x_ticks.labels[i], L.tick_px, x, label_top, HAlign::Centre,
               VAlign::Top, kInk);
@@ -148,7 +126,7 @@ void draw_axes(Image& img, Font& font, const FrameLayout& L, const FrameSpec& sp
   const int label_right = b.x - 1 - L.tick_len - L.gap;
   int widest_y = 0;
   for (std::size_t i = 0; i < L.y_ticks.values.size(); ++i) {
-    const int y = tick_pos(L.map.y(L.y_ticks.values[i]), b.y, b.bottom());
+    const int y = tick_pixel(L.map.y(L.y_ticks.values[i]), b.y, b.bottom());
     img.fill_rect(Rect{b.x - 1 - L.tick_len, y, L.tick_len, 1}, kInk);
     const Rect r = font.draw(img, L.y_ticks.labels[i], L.tick_px, label_right, y,
                              HAlign::Right, VAlign::Middle, kInk);

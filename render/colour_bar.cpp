@@ -23,26 +23,6 @@ void bar_range(const ColourBarSpec& s, double* lo, double* hi) {
   *hi = cat ? std::round(s.range_hi) + 0.5 : s.range_hi;
 }
 
-// Ticks at the bar's ends go onto its frame lines, as the axes' do.
-int tick_row(double p, int lo, int hi) {
-  if (p < lo + 0.5) return lo - 1;
-  if (p > hi - 0.5) return hi;
-  return int(std::floor(p));
-}
-
-void outline(Image& img, const Rect& r) {
-  img.fill_rect(Rect{r.x - 1, r.y - 1, r.w + 2, 1}, kInk);
-  img.fill_rect(Rect{r.x - 1, r.bottom(), r.w + 2, 1}, kInk);
-  img.fill_rect(Rect{r.x - 1, r.y - 1, 1, r.h + 2}, kInk);
-  img.fill_rect(Rect{r.right(), r.y - 1, 1, r.h + 2}, kInk);
-}
-
-int widest(Font& font, const Ticks& t, int px) {
-  int w = 0;
-  for (const std::string& s : t.labels) w = std::max(w, font.text_width(s, px));
-  return w;
-}
-
 }  // namespace
 
 Ticks colour_bar_ticks(const ColourBarSpec& s, int length) {
@@ -70,7 +50,7 @@ Ticks colour_bar_ticks(const ColourBarSpec& s, int length) {
 
 int colour_bar_room(Font& font, const ColourBarSpec& s, const Ticks& ticks) {
   const int label = s.label.empty() ? 0 : s.gap + font.line_height(s.label_px);
-  return 1 + s.tick_len + s.gap + widest(font, ticks, s.tick_px) + label;
+  return 1 + s.tick_len + s.gap + widest_label(font, ticks, s.tick_px) + label;
 }
 
 void draw_colour_bar(Image& img, Font& font, const Rect& r, const ColourBarSpec& s,
@@ -83,11 +63,11 @@ void draw_colour_bar(Image& img, Font& font, const Rect& r, const ColourBarSpec&
     const double v = lo + (hi - lo) * (r.h - y - 0.5) / r.h;
     img.fill_rect(Rect{r.x, r.y + y, r.w, 1}, cmap.map(v, s.range_lo, s.range_hi));
   }
-  outline(img, r);
+  img.frame_rect(r, kInk);
   int widest_label = 0;
   for (std::size_t i = 0; i < ticks.values.size(); ++i) {
     const double p = r.bottom() - (ticks.values[i] - lo) / (hi - lo) * r.h;
-    const int y = tick_row(p, r.y, r.bottom());
+    const int y = tick_pixel(p, r.y, r.bottom());
     img.fill_rect(Rect{r.right() + 1, y, s.tick_len, 1}, kInk);
     const Rect t = font.draw(img, ticks.labels[i], s.tick_px, r.right() + 1 + s.tick_len + s.gap,
                              y, HAlign::Left, VAlign::Middle, kInk);

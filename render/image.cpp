@@ -68,6 +68,13 @@ void Image::fill_rect(const Rect& r, Rgba c) {
   }
 }
 
+void Image::frame_rect(const Rect& r, Rgba c) {
+  fill_rect(Rect{r.x - 1, r.y - 1, r.w + 2, 1}, c);
+  fill_rect(Rect{r.x - 1, r.bottom(), r.w + 2, 1}, c);
+  fill_rect(Rect{r.x - 1, r.y - 1, 1, r.h + 2}, c);
+  fill_rect(Rect{r.right(), r.y - 1, 1, r.h + 2}, c);
+}
+
 void Image::blend(int x, int y, Rgba c, std::uint8_t coverage) {
   if (x < 0 || y < 0 || x >= width_ || y >= height_ || coverage == 0) return;
   const unsigned a = (unsigned(coverage) * c.a + 127) / 255;

@@ -59,6 +59,8 @@ class Image {
   void fill(Rgba c);
   // Clipped to the image; a rectangle partly outside is drawn where it lands.
   void fill_rect(const Rect& r, Rgba c);
+  // A 1 px line just outside r (an axes box, a colour bar).
+  void frame_rect(const Rect& r, Rgba c);
   // Source-over blend of colour c with coverage alpha (0..255) at (x, y),
   // ignoring points outside the image.
   void blend(int x, int y, Rgba c, std::uint8_t coverage);

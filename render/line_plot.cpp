@@ -38,12 +38,6 @@ void check(const LinePlot& p) {
   if (!why.str().empty()) throw InvalidArgument(why.str());
 }
 
-int widest(Font& font, const Ticks& t, int px) {
-  int w = 0;
-  for (const std::string& s : t.labels) w = std::max(w, font.text_width(s, px));
-  return w;
-}
-
 // As many ticks as fit with about 2.5 lines of text between them.
 int ticks_for(int pixels, int spacing) { return std::clamp(pixels / std::max(1, spacing), 2, kMaxTicks); }
 
@@ -174,7 +168,7 @@ int y_axis_width(Font& font, const LinePlot& p) {
   check(p);
   const Metrics m = metrics(font, p.text_px);
   const int title = p.y_label.empty() ? 0 : m.line + m.gap;
-  return m.gap + title + widest(font, nice_ticks(p.y.lo, p.y.hi, kMaxTicks), p.text_px) +
+  return m.gap + title + widest_label(font, nice_ticks(p.y.lo, p.y.hi, kMaxTicks), p.text_px) +
          m.gap + m.tick + 1;
 }
 

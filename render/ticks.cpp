@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "render/error.hpp"
+#include "render/font.hpp"
 
 namespace render {
 
@@ -49,6 +50,18 @@ Ticks nice_ticks(double lo, double hi, int max_ticks) {
     t.labels.push_back(format_tick(v, t.decimals));
   }
   return t;
+}
+
+int tick_pixel(double p, int lo, int hi) {
+  if (p < lo + 0.5) return lo - 1;
+  if (p > hi - 0.5) return hi;
+  return int(std::floor(p));
+}
+
+int widest_label(Font& font, const Ticks& t, int px) {
+  int w = 0;
+  for (const std::string& s : t.labels) w = std::max(w, font.text_width(s, px));
+  return w;
 }
 
 }  // namespace render
