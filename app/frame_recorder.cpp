@@ -8,7 +8,6 @@
 
 #include "app/frame_file.hpp"
 #include "app/frames.hpp"
-#include "render/annotate.hpp"
 #include "render/png_io.hpp"
 #include "sim/binary_io.hpp"
 
@@ -116,11 +115,7 @@ FrameView gif_view(const sim::Scenario& s, const FrameView& view, render::Font& 
     small.height = std::max(64, int(std::lround(double(view.height) * small.width / view.width)));
     return small;
   }
-  render::FrameSpec probe;
-  probe.width = small.width;
-  probe.world_x0 = view.window.x0, probe.world_x1 = view.window.x1;
-  probe.world_y0 = view.window.y0, probe.world_y1 = view.window.y1;
-  small.height = render::fit_frame_height(font, probe);
+  small.height = auto_height(s, view.window, small.width, font);
   return small;
 }
 

@@ -61,14 +61,16 @@ FrameView frame_view(const sim::Scenario& s, const Window& window, render::Font&
   view.window = window;
   view.width = s.output.image_size[0];
   view.height = s.output.image_size[1];
-  if (view.height == sim::kAutoHeight) {
-    render::FrameSpec probe;
-    probe.width = view.width;
-    set_window(probe, window);
-    probe.title = s.name;
-    view.height = render::fit_frame_height(font, probe);
-  }
+  if (view.height == sim::kAutoHeight) view.height = auto_height(s, window, view.width, font);
   return view;
+}
+
+int auto_height(const sim::Scenario& s, const Window& window, int width, render::Font& font) {
+  render::FrameSpec probe;
+  probe.width = width;
+  set_window(probe, window);
+  probe.title = s.name;
+  return render::fit_frame_height(font, probe);
 }
 
 render::FrameSpec frame_spec(const sim::Scenario& scenario, const FieldStyle& style,

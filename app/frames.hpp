@@ -161,6 +161,9 @@ struct FrameView {
   int width = 1280, height = 720;
 };
 FrameView frame_view(const sim::Scenario& scenario, const Window& window, render::Font& font);
+// The "auto" height of a frame `width` px wide showing `window`.
+int auto_height(const sim::Scenario& scenario, const Window& window, int width,
+                render::Font& font);
 
 // Title "<scenario> — <field title> (<stage>)", time stamp "t = 4.00 s".
 render::FrameSpec frame_spec(const sim::Scenario& scenario, const FieldStyle& style,
