@@ -52,6 +52,9 @@ struct RenderOptions {
 };
 int render_command(const RenderOptions& options);
 
+// Whether s ends with suffix, ignoring case (".PNG" is ".png").
+bool ends_with(std::string s, const std::string& suffix);
+
 // `landslide panel`: several PNGs with captions on one page.
 struct PanelOptions {
   std::string out;  // .png
@@ -60,11 +63,6 @@ struct PanelOptions {
   std::vector<std::string> items;  // IMAGE CAPTION IMAGE CAPTION ...
 };
 int panel_command(const PanelOptions& options);
-
-// The panel itself, for the gallery: images (row-major) with one caption
-// each, `cols` per row, written atomically to `out`. Throws render::Error.
-void write_panel(const std::vector<std::string>& images, const std::vector<std::string>& captions,
-                 int cols, const std::string& title, const std::string& out);
 
 // `landslide gallery`: the paper's figures 5, 6, 9, 10, 11, 12 (PNG), an
 // animation of the phi = 20 slide and one of the four friction angles side by
