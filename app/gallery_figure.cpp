@@ -26,17 +26,8 @@ render::FrameSpec panel_spec(const FigurePanel& p, const FieldStyle& style, cons
 }
 
 render::ColourBarSpec bar_spec(const render::FrameSpec& panel, int text_px) {
-  render::ColourBarSpec bar;
-  bar.colour_map = panel.colour_map;
-  bar.range_lo = panel.range_lo;
-  bar.range_hi = panel.range_hi;
-  bar.label = render::bar_label(panel);
-  bar.names = panel.bar_names;
-  bar.label_scale = panel.bar_scale;
-  bar.tick_px = text_px;
-  bar.label_px = text_px;
-  bar.tick_len = bar.gap = std::max(2, text_px / 3);
-  return bar;
+  const int tick_len = std::max(2, text_px / 3);
+  return render::colour_bar_spec(panel, text_px, text_px, tick_len, tick_len);
 }
 
 int page_width(int panel_w, int cols, int gap, int margin, int bar_w) {

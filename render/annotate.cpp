@@ -22,6 +22,13 @@ std::string format_time(double seconds) {
   return buf;
 }
 
+ColourBarSpec colour_bar_spec(const FrameSpec& spec, int tick_px, int label_px, int tick_len,
+                              int gap) {
+  return ColourBarSpec{spec.colour_map, spec.range_lo, spec.range_hi, bar_label(spec),
+                       spec.bar_names,  spec.bar_scale, tick_px,      label_px,
+                       tick_len,        gap};
+}
+
 std::string bar_label(const FrameSpec& spec) {
   if (spec.unit.empty()) return spec.field_label;
   if (spec.field_label.empty()) return "[" + spec.unit + "]";
@@ -42,9 +49,7 @@ FrameLayout layout_frame(Font& font, const FrameSpec& spec) {
   L.tick_len = px(6);
   L.gap = px(6);
   L.margin = px(14);
-  L.bar = ColourBarSpec{spec.colour_map, spec.range_lo,  spec.range_hi, bar_label(spec),
-                        spec.bar_names,  spec.bar_scale, L.tick_px,    L.label_px,
-                        L.tick_len,      L.gap};
+  L.bar = colour_bar_spec(spec, L.tick_px, L.label_px, L.tick_len, L.gap);
   const WorldWindow window{spec.world_x0, spec.world_x1, spec.world_y0, spec.world_y1};
   const int tick_h = font.line_height(L.tick_px), label_h = font.line_height(L.label_px);
   const int bar_w = px(22), bar_gap = px(24);

@@ -41,5 +41,9 @@ void draw_annotations(Image& img, Font& font, const FrameLayout& layout, const F
 std::string format_time(double seconds);
 // "displacement [m]", or just the label when the unit is empty.
 std::string bar_label(const FrameSpec& spec);
+// The colour bar a frame of `spec` shows, at the given sizes (a frame's own,
+// or a figure's bar shared by its panels).
+ColourBarSpec colour_bar_spec(const FrameSpec& spec, int tick_px, int label_px, int tick_len,
+                              int gap);
 
 }  // namespace render
