@@ -65,12 +65,26 @@ FrameView frame_view(const sim::Scenario& s, const Window& window, render::Font&
   return view;
 }
 
+// Frames of one run share one size, but their titles (field and stage) and
+// bar labels differ: the height is the tallest any of them needs.
 int auto_height(const sim::Scenario& s, const Window& window, int width, render::Font& font) {
-  render::FrameSpec probe;
-  probe.width = width;
-  set_window(probe, window);
-  probe.title = s.name;
-  return render::fit_frame_height(font, probe);
+  const FrameView probe{window, width, render::kMinFrameSide};  // the height is not read
+  std::vector<std::string> stages = s.output.frame_stages;
+  if (stages.empty()) stages.push_back("");
+  int height = render::kMinFrameSide;
+  // Every field, not only output.fields: `landslide render` paints any of them
+  // in the run's frame size.
+  for (const std::string& name : field_names()) {
+    const FieldStyle style = field_style(parse_field(name), s);
+    for (const std::string& stage : stages) {
+      Frame frame;
+      frame.stage = stage;
+      const render::FrameSpec spec =
+          frame_spec(s, style, s.output.colour_map, Range{0, 1}, frame, probe);
+      height = std::max(height, render::fit_frame_height(font, spec));
+    }
+  }
+  return height;
 }
 
 render::FrameSpec frame_spec(const sim::Scenario& scenario, const FieldStyle& style,

@@ -155,7 +155,8 @@ Window view_window(const sim::Scenario& scenario, const Extent& material);
 
 // The window and the image size every frame of a run shares: image_size's
 // width, and its height, or for "auto" the height at which `window` fills
-// the plot's width (render::fit_frame_height, for a colour bar of 0 .. 1).
+// the plot's width for the tallest title and bar label of any field and
+// painted stage (render::fit_frame_height, for a colour bar of 0 .. 1).
 struct FrameView {
   Window window;
   int width = 1280, height = 720;

@@ -20,13 +20,19 @@ struct FrameLayout {
   Ticks x_ticks, y_ticks, bar_ticks;
   ColourBarSpec bar;  // the bar's map, range, label and sizes
   int tick_px = 15, label_px = 17, title_px = 22;  // font pixel sizes
+  // The title in lines that clear the time stamp; their count sets the
+  // heading's height.
+  std::vector<std::string> title_lines;
   int tick_len = 6, gap = 6, margin = 14;
 };
 
 // Sizes scale with the tick labels' (spec.text_px, or frame_text_px of the
-// size). Throws
+// size). The colour bar goes right of the plot or below it, whichever
+// leaves the world window the larger box (below, for a slope). Throws
 // InvalidArgument if the image is too small to hold the annotations.
 FrameLayout layout_frame(Font& font, const FrameSpec& spec);
+// layout_frame without the throw: false where the image is too small.
+bool try_layout_frame(Font& font, const FrameSpec& spec, FrameLayout* layout);
 
 // The image height at which spec's world window fills the plot's width
 // with the margins layout_frame() leaves for this spec.width (spec.height is

@@ -26,7 +26,8 @@ void bar_range(const ColourBarSpec& s, double* lo, double* hi) {
 }  // namespace
 
 Ticks colour_bar_ticks(const ColourBarSpec& s, int length) {
-  const int per_tick = std::max(1, int(std::lround(40.0 * s.tick_px / 15.0)));
+  const double spacing = s.side == BarSide::Below ? 110.0 : 40.0;
+  const int per_tick = std::max(1, int(std::lround(spacing * s.tick_px / 15.0)));
   if (!categorical(s)) {
     // Nice steps in the labelled unit, placed at the values they stand for.
     Ticks t = nice_ticks(s.range_lo * s.label_scale, s.range_hi * s.label_scale,
@@ -48,39 +49,90 @@ Ticks colour_bar_ticks(const ColourBarSpec& s, int length) {
   return t;
 }
 
-int colour_bar_room(Font& font, const ColourBarSpec& s, const Ticks& ticks) {
-  const int label = s.label.empty() ? 0 : s.gap + font.line_height(s.label_px);
-  return 1 + s.tick_len + s.gap + widest_label(font, ticks, s.tick_px) + label;
+BarLabel bar_label_lines(Font& font, const ColourBarSpec& s, int length) {
+  BarLabel b;
+  if (s.label.empty()) return b;
+  b.px = s.label_px;
+  while (b.px > 6 && widest_word(font, s.label, b.px) > length) --b.px;
+  b.lines = wrap_text(font, s.label, b.px, length);
+  return b;
 }
 
-void draw_colour_bar(Image& img, Font& font, const Rect& r, const ColourBarSpec& s,
-                     const Ticks& ticks) {
+int colour_bar_room(Font& font, const ColourBarSpec& s, const Ticks& ticks, int length) {
+  const BarLabel label = bar_label_lines(font, s, length);
+  const int lines = int(label.lines.size());
+  const int label_room = lines == 0 ? 0 : s.gap + lines * font.line_height(label.px);
+  const int tick_room = s.side == BarSide::Below ? font.line_height(s.tick_px)
+                                                 : widest_label(font, ticks, s.tick_px);
+  return 1 + s.tick_len + s.gap + tick_room + label_room;
+}
+
+namespace {
+
+// The strip: low end at the bottom (or left), high end at the top (right).
+void draw_strip(Image& img, const Rect& r, const ColourBarSpec& s, double lo, double hi) {
   const ColourMap cmap = ColourMap::by_name(s.colour_map);
-  double lo = 0, hi = 1;
-  bar_range(s, &lo, &hi);
-  for (int y = 0; y < r.h; ++y) {
-    // Row centre -> value; the top row is the high end.
-    const double v = lo + (hi - lo) * (r.h - y - 0.5) / r.h;
-    img.fill_rect(Rect{r.x, r.y + y, r.w, 1}, cmap.map(v, s.range_lo, s.range_hi));
+  const bool below = s.side == BarSide::Below;
+  const int length = below ? r.w : r.h;
+  for (int i = 0; i < length; ++i) {
+    // Row (column) centre -> value.
+    const double v = lo + (hi - lo) * (i + 0.5) / length;
+    const Rgba c = cmap.map(v, s.range_lo, s.range_hi);
+    if (below)
+      img.fill_rect(Rect{r.x + i, r.y, 1, r.h}, c);
+    else
+      img.fill_rect(Rect{r.x, r.bottom() - 1 - i, r.w, 1}, c);
   }
   img.frame_rect(r, kInk);
-  int widest_label = 0;
+}
+
+void draw_beside_right(Image& img, Font& font, const Rect& r, const ColourBarSpec& s,
+                       const Ticks& ticks, double lo, double hi) {
+  int widest = 0;
   for (std::size_t i = 0; i < ticks.values.size(); ++i) {
     const double p = r.bottom() - (ticks.values[i] - lo) / (hi - lo) * r.h;
     const int y = tick_pixel(p, r.y, r.bottom());
     img.fill_rect(Rect{r.right() + 1, y, s.tick_len, 1}, kInk);
     const Rect t = font.draw(img, ticks.labels[i], s.tick_px, r.right() + 1 + s.tick_len + s.gap,
                              y, HAlign::Left, VAlign::Middle, kInk);
-    widest_label = std::max(widest_label, t.w);
+    widest = std::max(widest, t.w);
   }
-  if (s.label.empty()) return;
-  // A label longer than the bar is set smaller rather than run past its ends
-  // (into the time stamp above, or off a small frame).
-  int px = s.label_px;
-  while (px > 6 && font.text_width(s.label, px) > r.h) --px;
-  const TextMask m = rotate_ccw(font.render(s.label, px));
-  draw_mask(img, m, r.right() + 1 + s.tick_len + 2 * s.gap + widest_label, r.y + r.h / 2,
-            HAlign::Left, VAlign::Middle, kInk);
+  const BarLabel label = bar_label_lines(font, s, r.h);
+  int x = r.right() + 1 + s.tick_len + 2 * s.gap + widest;
+  for (const std::string& line : label.lines) {
+    const TextMask m = rotate_ccw(font.render(line, label.px));
+    x = draw_mask(img, m, x, r.y + r.h / 2, HAlign::Left, VAlign::Middle, kInk).right();
+  }
+}
+
+void draw_beside_below(Image& img, Font& font, const Rect& r, const ColourBarSpec& s,
+                       const Ticks& ticks, double lo, double hi) {
+  const int label_top = r.bottom() + 1 + s.tick_len + s.gap;
+  for (std::size_t i = 0; i < ticks.values.size(); ++i) {
+    const double p = r.x + (ticks.values[i] - lo) / (hi - lo) * r.w;
+    const int x = tick_pixel(p, r.x, r.right());
+    img.fill_rect(Rect{x, r.bottom() + 1, 1, s.tick_len}, kInk);
+    font.draw(img, ticks.labels[i], s.tick_px, x, label_top, HAlign::Centre, VAlign::Top, kInk);
+  }
+  const BarLabel label = bar_label_lines(font, s, r.w);
+  int y = label_top + font.line_height(s.tick_px) + s.gap;
+  for (const std::string& line : label.lines) {
+    font.draw(img, line, label.px, r.x + r.w / 2, y, HAlign::Centre, VAlign::Top, kInk);
+    y += font.line_height(label.px);
+  }
+}
+
+}  // namespace
+
+void draw_colour_bar(Image& img, Font& font, const Rect& r, const ColourBarSpec& s,
+                     const Ticks& ticks) {
+  double lo = 0, hi = 1;
+  bar_range(s, &lo, &hi);
+  draw_strip(img, r, s, lo, hi);
+  if (s.side == BarSide::Below)
+    draw_beside_below(img, font, r, s, ticks, lo, hi);
+  else
+    draw_beside_right(img, font, r, s, ticks, lo, hi);
 }
 
 Image paint_colour_bar(Font& font, const ColourBarSpec& s, int strip_w, int strip_h, int pad,
@@ -89,6 +141,7 @@ Image paint_colour_bar(Font& font, const ColourBarSpec& s, int strip_w, int stri
     throw InvalidArgument("colour bar strip " + std::to_string(strip_w) + "x" +
                           std::to_string(strip_h) + " (pad " + std::to_string(pad) +
                           ") is too small");
+  if (s.side != BarSide::Right) throw InvalidArgument("a colour bar on its own stands upright");
   validate_range(s.range_lo, s.range_hi);
   if (!(s.label_scale > 0) || !std::isfinite(s.label_scale))
     throw InvalidArgument("colour bar label scale " + std::to_string(s.label_scale) +
@@ -96,7 +149,7 @@ Image paint_colour_bar(Font& font, const ColourBarSpec& s, int strip_w, int stri
   const Ticks ticks = colour_bar_ticks(s, strip_h);
   // Half a tick label of room above and below, where the end labels reach.
   const int half_text = font.line_height(s.tick_px) / 2 + 1;
-  Image img(pad + 1 + strip_w + colour_bar_room(font, s, ticks) + pad,
+  Image img(pad + 1 + strip_w + colour_bar_room(font, s, ticks, strip_h) + pad,
             2 * (pad + half_text) + strip_h, background);
   draw_colour_bar(img, font, Rect{pad + 1, pad + half_text, strip_w, strip_h}, s, ticks);
   return img;

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 
 #include "render/error.hpp"
 
@@ -215,6 +216,31 @@ Rect draw_mask(Image& img, const TextMask& m, int x, int y, HAlign h, VAlign v,
 Rect Font::draw(Image& img, const std::string& utf8, int pixel_size, int x, int y,
                 HAlign h, VAlign v, Rgba colour) {
   return draw_mask(img, render(utf8, pixel_size), x, y, h, v, colour);
+}
+
+std::vector<std::string> wrap_text(Font& font, const std::string& text, int px, int width) {
+  std::vector<std::string> lines;
+  std::istringstream words(text);
+  std::string word, line;
+  while (words >> word) {
+    const std::string longer = line.empty() ? word : line + " " + word;
+    if (!line.empty() && font.text_width(longer, px) > width) {
+      lines.push_back(line);
+      line = word;
+    } else {
+      line = longer;
+    }
+  }
+  if (!line.empty()) lines.push_back(line);
+  return lines;
+}
+
+int widest_word(Font& font, const std::string& text, int px) {
+  std::istringstream words(text);
+  std::string word;
+  int widest = 0;
+  while (words >> word) widest = std::max(widest, font.text_width(word, px));
+  return widest;
 }
 
 }  // namespace render

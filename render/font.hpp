@@ -79,6 +79,13 @@ class Font {
   std::unordered_map<std::uint64_t, Glyph> cache_;
 };
 
+// Words of `text` in lines no wider than `width` px at `px` (a word wider
+// than the line gets a line of its own).
+std::vector<std::string> wrap_text(Font& font, const std::string& text, int px, int width);
+// Width of the widest word of `text` at `px`: the narrowest line wrap_text
+// can keep every word inside.
+int widest_word(Font& font, const std::string& text, int px);
+
 // Decodes UTF-8; throws FontError on malformed input.
 std::u32string decode_utf8(const std::string& s);
 

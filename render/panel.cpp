@@ -1,7 +1,6 @@
 #include "render/panel.hpp"
 
 #include <algorithm>
-#include <sstream>
 
 #include "render/error.hpp"
 
@@ -40,23 +39,6 @@ int figure_text_px(Font& font, int page_width, double fraction) {
   int px = 6;
   while (px < 512 && ink_height(font.render("0123456789", px)) < wanted) ++px;
   return px;
-}
-
-std::vector<std::string> wrap_text(Font& font, const std::string& text, int px, int width) {
-  std::vector<std::string> lines;
-  std::istringstream words(text);
-  std::string word, line;
-  while (words >> word) {
-    const std::string longer = line.empty() ? word : line + " " + word;
-    if (!line.empty() && font.text_width(longer, px) > width) {
-      lines.push_back(line);
-      line = word;
-    } else {
-      line = longer;
-    }
-  }
-  if (!line.empty()) lines.push_back(line);
-  return lines;
 }
 
 PanelLayout layout_panel(Font& font, const std::vector<Image>& images, int rows, int cols,

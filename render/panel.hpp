@@ -33,10 +33,6 @@ struct PanelLayout {
 // "(a)" for 0, "(b)" for 1, ... "(z)", then "(27)" on.
 std::string panel_letter(std::size_t i);
 
-// Words of `text` in lines no wider than `width` px at `px` (a word wider
-// than the line gets a line of its own).
-std::vector<std::string> wrap_text(Font& font, const std::string& text, int px, int width);
-
 // Journal figures: text whose digits are at least this share of the page's
 // width stays legible when the page is printed at a column's width.
 constexpr double kFigureTextFraction = 0.012;

@@ -56,6 +56,32 @@ TEST(FrameText, DigitsAtLeastTwelvePixelsTallAt480AndScaleWithWidth) {
   }
 }
 
+// Issue 14: in a 480 px GIF frame of its own height a long title takes more
+// lines, and a bar label longer than its bar more lines, both at full size,
+// whichever side the bar is on.
+TEST(FrameText, TitleAndBarLabelKeepTheirSizeInA480PxFrame) {
+  Font font;
+  for (const double world_h : {18.0, 100.0}) {  // a slope (bar below), a column (bar right)
+    FrameSpec s;
+    s.width = 480;
+    s.world_x0 = 28, s.world_x1 = 78, s.world_y1 = world_h;
+    s.title = "paper-slope-phi20-n1648 \u2014 horizontal displacement (slide)";
+    s.field_label = "relative yield (1: at yield, 2: yielded this step)";
+    s.height = fit_frame_height(font, s);
+    const FrameLayout L = layout_frame(font, s);
+    EXPECT_EQ(L.bar.side, world_h < 50 ? BarSide::Below : BarSide::Right) << world_h;
+    ASSERT_GE(L.title_lines.size(), 2u) << world_h;
+    for (const std::string& line : L.title_lines)
+      EXPECT_LE(font.text_width(line, L.title_px), s.width - 2 * L.margin) << line;
+    const int length = std::max(L.colour_bar.w, L.colour_bar.h);
+    const BarLabel label = bar_label_lines(font, L.bar, length);
+    EXPECT_EQ(label.px, L.label_px) << world_h;
+    for (const std::string& line : label.lines)
+      EXPECT_LE(font.text_width(line, label.px), length) << line;
+    EXPECT_GE(ink_height(font.render("0123456789", label.px)), 12) << world_h;
+  }
+}
+
 TEST(FrameText, NoHeadingRowWithoutTitleOrTime) {
   Font font;
   FrameSpec s;

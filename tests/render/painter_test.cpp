@@ -62,9 +62,10 @@ TEST(Painter, PaintsPointsInsideAnAspectKeepingWindow) {
   const FrameLayout& L = painter.last_layout();
   // 1 m in x is 1 m in y.
   EXPECT_NEAR(double(L.box.w) / L.box.h, 117.0 / 20.0, 0.05);
-  // Centred in the plot area (within a pixel of rounding).
-  EXPECT_NEAR(L.box.x - L.plot_area.x, L.plot_area.right() - L.box.right(), 1);
-  EXPECT_NEAR(L.box.y - L.plot_area.y, L.plot_area.bottom() - L.box.bottom(), 1);
+  // Centred in the plot area, within the rounding of fit_window (the
+  // corner's floor) and of box() (the far edge's nearest pixel).
+  EXPECT_NEAR(L.box.x - L.plot_area.x, L.plot_area.right() - L.box.right(), 2);
+  EXPECT_NEAR(L.box.y - L.plot_area.y, L.plot_area.bottom() - L.box.bottom(), 2);
   // A point's colour at its pixel, background beside the block.
   const ColourMap cm = ColourMap::viridis();
   const int px = int(L.map.x(20.125)), py = int(L.map.y(5.25));
@@ -73,14 +74,24 @@ TEST(Painter, PaintsPointsInsideAnAspectKeepingWindow) {
   expect_clean_border(img, kWhite, 4);
 }
 
-TEST(Painter, ColourBarRunsLowToHighUpwards) {
+// The pixel on the bar's centre line `f` of the way from its low end.
+Rgba bar_pixel(const Image& img, const Rect& bar, BarSide side, double f) {
+  if (side == BarSide::Below) return img.at(bar.x + int(f * (bar.w - 1)), bar.y + bar.h / 2);
+  return img.at(bar.x + bar.w / 2, bar.bottom() - 1 - int(f * (bar.h - 1)));
+}
+
+TEST(Painter, ColourBarBesideATallWindowRunsLowToHighUpwards) {
   Painter painter(1280, 720);
   FrameSpec spec = slope_spec();
+  spec.world_x1 = 20;
   spec.colour_map = "jet";
   const Cloud c = block(0, 10, 0, 2, 0.5);
   const Image img = painter.paint(spec, c.view());
-  const Rect bar = painter.last_layout().colour_bar;
+  const FrameLayout& L = painter.last_layout();
+  ASSERT_EQ(L.bar.side, BarSide::Right);
+  const Rect bar = L.colour_bar;
   ASSERT_GT(bar.h, 100);
+  EXPECT_GT(bar.x, L.box.right());
   const ColourMap jet = ColourMap::jet();
   const int cx = bar.x + bar.w / 2;
   EXPECT_EQ(img.at(cx, bar.y), jet.at(1.0));
@@ -88,7 +99,30 @@ TEST(Painter, ColourBarRunsLowToHighUpwards) {
   for (int y = 0; y < bar.h; ++y) {
     ASSERT_EQ(img.at(cx, bar.y + y), jet.at((bar.h - y - 0.5) / bar.h)) << "row " << y;
   }
-  EXPECT_FALSE(painter.last_layout().bar_ticks.values.empty());
+  EXPECT_FALSE(L.bar_ticks.values.empty());
+}
+
+// A slope's window is wide: the bar goes under the plot, where it is long,
+// and runs low to high from left to right.
+TEST(Painter, ColourBarBelowAWideWindowRunsLowToHighRightwards) {
+  Painter painter(1280, 720);
+  FrameSpec spec = slope_spec();
+  spec.colour_map = "jet";
+  const Cloud c = block(0, 10, 0, 2, 0.5);
+  const Image img = painter.paint(spec, c.view());
+  const FrameLayout& L = painter.last_layout();
+  ASSERT_EQ(L.bar.side, BarSide::Below);
+  const Rect bar = L.colour_bar;
+  EXPECT_GT(bar.y, L.box.bottom());
+  ASSERT_GT(bar.w, 300);
+  EXPECT_LE(bar.right(), L.box.right());
+  const ColourMap jet = ColourMap::jet();
+  const int cy = bar.y + bar.h / 2;
+  for (int x = 0; x < bar.w; ++x) {
+    ASSERT_EQ(img.at(bar.x + x, cy), jet.at((x + 0.5) / bar.w)) << "column " << x;
+  }
+  EXPECT_GE(L.bar_ticks.values.size(), 3u);
+  expect_clean_border(img, kWhite, 4);
 }
 
 TEST(Painter, NothingClippedForTallWindowsLongLabelsAndSmallFrames) {
@@ -126,10 +160,9 @@ TEST(Painter, CategoricalFieldsGetOneBlockPerId) {
   const FrameLayout& L = painter.last_layout();
   ASSERT_EQ(L.bar_ticks.labels.size(), 3u);
   const ColourMap cat = ColourMap::categorical();
-  const int cx = L.colour_bar.x + L.colour_bar.w / 2;
-  EXPECT_EQ(img.at(cx, L.colour_bar.bottom() - 2), cat.map(0, 0, 2));
-  EXPECT_EQ(img.at(cx, L.colour_bar.y + L.colour_bar.h / 2), cat.map(1, 0, 2));
-  EXPECT_EQ(img.at(cx, L.colour_bar.y + 1), cat.map(2, 0, 2));
+  EXPECT_EQ(bar_pixel(img, L.colour_bar, L.bar.side, 0.01), cat.map(0, 0, 2));
+  EXPECT_EQ(bar_pixel(img, L.colour_bar, L.bar.side, 0.5), cat.map(1, 0, 2));
+  EXPECT_EQ(bar_pixel(img, L.colour_bar, L.bar.side, 0.99), cat.map(2, 0, 2));
 }
 
 TEST(Painter, BadSpecsThrowNamingTheValue) {
