@@ -7,7 +7,8 @@ cd "$(dirname "$0")"
 scripts/setup.sh
 scenario=${1:-scenarios/paper-slope-phi20-n1648.json}
 out=${2:-out/$(basename "$scenario" .json)}
-build/app/landslide run "$scenario" --out "$out"
+# --overwrite: run.sh always writes into the same folder, replacing its last run.
+build/app/landslide run "$scenario" --out "$out" --overwrite
 echo "outputs in $out:"
 echo "  summary: $out/summary.json"
 [ -f "$out/series.csv" ] && echo "  time series: $out/series.csv, $out/series.png"

@@ -23,9 +23,17 @@ struct RunOptions {
   // A folder of saved gravity-stage states shared by runs: a scenario whose
   // first stages match a saved one (sim::stage_prefix_key) starts from it.
   std::string state_cache;  // "": no reuse
+  // An earlier run's outputs in out_dir are removed first (without it such a
+  // folder is refused: app/output_dir.hpp).
+  bool overwrite = false;
+  bool allow_long = false;  // run past the estimate's limits (app/estimate.hpp)
 };
 
 int run_command(const RunOptions& options);
+// `landslide check`: the preflight of `run` with the same options (out_dir
+// may be empty: the output folder is then not checked); prints the estimate
+// to stdout, writes nothing.
+int check_command(const RunOptions& options);
 
 // `landslide resume DIR`: continues the run whose checkpoint is
 // DIR/checkpoint.lsck, writing into DIR as the run would have.
@@ -33,9 +41,9 @@ struct ResumeOptions {
   std::string dir;
   int threads = 0;
   double checkpoint_every = 0;
+  bool allow_long = false;
 };
 int resume_command(const ResumeOptions& options);
-int check_command(const std::string& scenario);
 
 // `landslide render`: re-paints saved VTK states without simulating.
 struct RenderOptions {

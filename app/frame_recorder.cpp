@@ -3,11 +3,13 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <regex>
 #include <set>
 
 #include "app/frame_file.hpp"
 #include "app/frames.hpp"
+#include "app/output_dir.hpp"
+#include "render/annotate.hpp"
+#include "render/error.hpp"
 #include "render/png_io.hpp"
 #include "sim/binary_io.hpp"
 
@@ -21,19 +23,6 @@ std::string numbered(int number, const char* ext) {
   char name[32];
   std::snprintf(name, sizeof name, "%06d%s", number, ext);
   return name;
-}
-
-// Removes the files called NNNNNN<ext> in `dir`, but those `keep` names.
-void remove_numbered(const fs::path& dir, const std::string& ext, const std::set<int>& keep = {}) {
-  if (!fs::is_directory(dir)) return;
-  const std::regex numbered_file(R"((\d{6}))" + std::regex_replace(ext, std::regex(R"(\.)"), R"(\.)"));
-  std::smatch m;
-  for (const fs::directory_entry& e : fs::directory_iterator(dir)) {
-    const std::string name = e.path().filename().string();
-    if (e.is_regular_file() && std::regex_match(name, m, numbered_file) &&
-        !keep.count(std::stoi(m[1].str())))
-      fs::remove(e.path());
-  }
 }
 
 }  // namespace
@@ -117,6 +106,29 @@ FrameView gif_view(const sim::Scenario& s, const FrameView& view, render::Font& 
   }
   small.height = auto_height(s, view.window, small.width, font);
   return small;
+}
+
+FrameView FrameRecorder::check_layouts() {
+  const FrameView view = frame_view(scenario_, view_window(scenario_, Extent{}), painter_.font());
+  const FrameView small = gif_view(scenario_, view, painter_.font());
+  Frame probe;
+  probe.stage = scenario_.stages.front().name;
+  for (std::size_t k = 0; k < fields_.size(); ++k) {
+    const Range range = styles_[k].fixed_range ? Range{styles_[k].lo, styles_[k].hi} : Range{};
+    for (const FrameView* v : {&view, &small}) {
+      const render::FrameSpec spec =
+          frame_spec(scenario_, styles_[k], scenario_.output.colour_map, range, probe, *v);
+      try {
+        render::layout_frame(painter_.font(), spec);
+      } catch (const render::InvalidArgument& e) {
+        throw render::InvalidArgument((v == &small ? "its GIF copy " + std::to_string(v->width) +
+                                                         " px wide: "
+                                                   : std::string()) +
+                                      e.what());
+      }
+    }
+  }
+  return view;
 }
 
 int FrameRecorder::paint_pending() {

@@ -225,6 +225,11 @@ class FrameRecorder {
   // spilled frames. Call once the output directory exists; paint_pending()
   // calls it if nobody did.
   void start();
+  // Lays out a frame of every field, full size and the GIF's, in the view
+  // known before the run (output.view, or the domain's window), so that an
+  // image_size too small for the annotations is refused before simulating;
+  // throws render::InvalidArgument. Returns that full-size view.
+  FrameView check_layouts();
   void capture(const sim::World& world, double stage_time, int number, const std::string& stage);
   std::size_t pending() const { return pending_.size(); }
   // Bytes of captured frames held in memory (the one being spilled).

@@ -23,6 +23,11 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--state-cache", run.state_cache,
                       "Folder of saved gravity-stage states: start from a matching one, save "
                       "this run's if there is none");
+  run_cmd->add_flag("--overwrite", run.overwrite,
+                    "Remove an earlier run's outputs from --out first (without it such a folder "
+                    "is refused)");
+  run_cmd->add_flag("--allow-long", run.allow_long,
+                    "Run a scene whose estimate passes the limits (time, steps, memory, disk)");
 
   app::ResumeOptions resume;
   CLI::App* resume_cmd = cli.add_subcommand(
@@ -33,10 +38,21 @@ int main(int argc, char** argv) {
   resume_cmd->add_option("--checkpoint-every", resume.checkpoint_every,
                          "Go on writing checkpoints every this many simulated seconds")
       ->check(CLI::PositiveNumber);
+  resume_cmd->add_flag("--allow-long", resume.allow_long,
+                       "Go on although the estimate of what is left passes the limits");
 
-  std::string check_path;
-  CLI::App* check_cmd = cli.add_subcommand("check", "Validate a scenario; write nothing");
-  check_cmd->add_option("scenario", check_path, "Scenario JSON file")->required();
+  app::RunOptions check;
+  CLI::App* check_cmd = cli.add_subcommand(
+      "check", "Everything `run` checks before simulating, and the run's estimate; write nothing");
+  check_cmd->add_option("scenario", check.scenario, "Scenario JSON file")->required();
+  check_cmd->add_option("--out", check.out_dir, "Check this output directory too");
+  check_cmd->add_option("--threads", check.threads, "Threads the estimate is for")
+      ->check(CLI::Range(1, 1024));
+  check_cmd->add_option("--state-cache", check.state_cache, "Check this state cache folder too");
+  check_cmd->add_flag("--overwrite", check.overwrite,
+                      "Accept an --out that holds an earlier run's outputs (run would remove them)");
+  check_cmd->add_flag("--allow-long", check.allow_long,
+                      "Accept an estimate past the limits (print it, exit 0)");
 
   app::RenderOptions render;
   std::vector<double> range;
@@ -98,7 +114,7 @@ int main(int argc, char** argv) {
   }
   if (*run_cmd) return app::run_command(run);
   if (*resume_cmd) return app::resume_command(resume);
-  if (*check_cmd) return app::check_command(check_path);
+  if (*check_cmd) return app::check_command(check);
   if (*render_cmd) {
     if (range.size() == 2) render.range = std::make_pair(range[0], range[1]);
     return app::render_command(render);

@@ -1,6 +1,5 @@
-// `landslide run`, `resume` and `check`: validate the whole scenario (or
-// checkpoint) before anything is written, then hand the time loop to
-// sim::Simulation and listen.
+// `landslide run`, `resume` and `check`: the preflight (app/preflight.hpp)
+// before anything is written, then the time loop, handed to sim::Simulation.
 #include "landslide_version.hpp"
 #include <omp.h>
 
@@ -15,6 +14,8 @@
 #include "app/checkpoint.hpp"
 #include "app/commands.hpp"
 #include "app/frames.hpp"
+#include "app/output_dir.hpp"
+#include "app/preflight.hpp"
 #include "app/run_observer.hpp"
 #include "app/state_cache.hpp"
 #include "sim/binary_io.hpp"
@@ -27,18 +28,6 @@ namespace app {
 
 namespace fs = std::filesystem;
 
-int check_command(const std::string& path) {
-  try {
-    const sim::Scenario s = sim::load_scenario(path);
-    std::cout << path << ": ok (" << s.materials.size() << " materials, " << s.bodies.size()
-              << " bodies, " << s.stages.size() << " stages)\n";
-    return kExitOk;
-  } catch (const sim::ScenarioError& e) {
-    std::cerr << "error: " << e.what() << '\n';
-    return kExitBadInput;
-  }
-}
-
 namespace {
 
 // One run of a scenario into `out`: fresh, from cached gravity states, or
@@ -49,48 +38,46 @@ struct RunSetup {
   fs::path out;
   int threads = 0;
   const Checkpoint* checkpoint = nullptr;  // resume from it
+  bool overwrite = false, allow_long = false;
 };
 
-// Sets up the painter and the simulation; nullptr (after printing why) on bad
-// input. Painting is set up before anything runs or is written: a missing
-// ffmpeg or OSMesa must not show up after hours of simulation.
-std::unique_ptr<FrameRecorder> make_recorder(const RunSetup& r, bool& ok) {
-  ok = true;
-  if (!paints_frames(r.scenario)) return nullptr;
-  std::string why;
-  if (!render::ffmpeg_available(&why)) {
-    std::cerr << "error: " << r.source.scenario_file
-              << " asks for painted frames (output.frame_interval > 0), which are encoded "
-                 "into mp4 and gif by ffmpeg: "
-              << why << '\n';
-    ok = false;
-    return nullptr;
-  }
-  try {
-    return std::make_unique<FrameRecorder>(r.scenario, r.out);
-  } catch (const std::exception& e) {
-    std::cerr << "error: cannot set up the off-screen painter: " << e.what() << '\n';
-    ok = false;
-    return nullptr;
-  }
+// The OpenMP threads the run asks for (0: OpenMP's default), now in force.
+int use_threads(int asked) {
+  if (asked > 0) omp_set_num_threads(asked);
+  return omp_get_max_threads();
 }
 
-// Seeds the points and restores a checkpoint or cached state; nullptr (after
-// printing why) on bad input.
-std::unique_ptr<sim::Simulation> make_simulation(RunSetup& r) {
+PreflightRequest preflight_request(const RunSetup& r, int threads) {
+  PreflightRequest q;
+  q.scenario = &r.scenario;
+  q.scenario_file = r.source.scenario_file;
+  q.out = r.out;
+  q.state_cache = r.source.state_cache;
+  q.checkpoint = r.checkpoint;
+  q.overwrite = r.overwrite;
+  q.allow_long = r.allow_long;
+  q.threads = threads;
+  return q;
+}
+
+// A run's setup from its command-line options; false (after printing why)
+// if the scenario cannot be read.
+bool set_up_run(const RunOptions& options, RunSetup& r) {
   try {
-    auto simulation = std::make_unique<sim::Simulation>(r.scenario);
-    if (r.checkpoint)
-      simulation->restore_state(r.checkpoint->state, checkpoint_path(r.out).string());
-    else if (!r.source.state_cache.empty())
-      r.source.reused_stages = restore_cached_state(r.source.state_cache, *simulation);
-    return simulation;
-  } catch (const sim::ScenarioError& e) {  // e.g. a body that holds no point
+    r.source.scenario_text = sim::read_scenario_text(options.scenario);
+    r.scenario = sim::parse_scenario(r.source.scenario_text, options.scenario);
+  } catch (const sim::ScenarioError& e) {
     std::cerr << "error: " << e.what() << '\n';
-  } catch (const sim::StateError& e) {
-    std::cerr << "error: " << e.what() << '\n';
+    return false;
   }
-  return nullptr;
+  r.source.scenario_file = options.scenario;
+  r.source.checkpoint_every = options.checkpoint_every;
+  r.source.state_cache = options.state_cache;
+  r.out = options.out_dir;
+  r.threads = options.threads;
+  r.overwrite = options.overwrite;
+  r.allow_long = options.allow_long;
+  return true;
 }
 
 // The state before a failure, as DIR/vtk/last-good.vtu, for a look at what
@@ -110,15 +97,15 @@ void write_last_good_state(const RunSetup& r, const sim::WatchdogError& e) {
 }
 
 int execute(RunSetup& r) {
-  if (r.threads > 0) omp_set_num_threads(r.threads);
-  const int threads = omp_get_max_threads();
-  bool ok = true;
-  std::unique_ptr<FrameRecorder> recorder = make_recorder(r, ok);
-  if (!ok) return kExitBadInput;
-  std::unique_ptr<sim::Simulation> simulation = make_simulation(r);
-  if (!simulation) return kExitBadInput;
+  const int threads = use_threads(r.threads);
+  Prepared prepared;
+  if (!preflight(preflight_request(r, threads), prepared, std::cerr)) return kExitBadInput;
+  std::unique_ptr<FrameRecorder> recorder = std::move(prepared.recorder);
+  std::unique_ptr<sim::Simulation> simulation = std::move(prepared.simulation);
+  r.source.reused_stages = prepared.reused_stages;
   std::unique_ptr<RunObserver> observer;
   try {
+    if (r.overwrite && !r.checkpoint) remove_earlier_outputs(r.out);
     fs::create_directories(r.out);
     std::cerr << "landslide " << LANDSLIDE_VERSION << ": " << r.scenario.name << ", "
               << simulation->world().points.size() << " points, h = " << r.scenario.cell_size
@@ -172,19 +159,20 @@ int execute(RunSetup& r) {
 
 int run_command(const RunOptions& options) {
   RunSetup r;
-  try {
-    r.source.scenario_text = sim::read_scenario_text(options.scenario);
-    r.scenario = sim::parse_scenario(r.source.scenario_text, options.scenario);
-  } catch (const sim::ScenarioError& e) {
-    std::cerr << "error: " << e.what() << '\n';
-    return kExitBadInput;
-  }
-  r.source.scenario_file = options.scenario;
-  r.source.checkpoint_every = options.checkpoint_every;
-  r.source.state_cache = options.state_cache;
-  r.out = options.out_dir;
-  r.threads = options.threads;
+  if (!set_up_run(options, r)) return kExitBadInput;
   return execute(r);
+}
+
+int check_command(const RunOptions& options) {
+  RunSetup r;
+  if (!set_up_run(options, r)) return kExitBadInput;
+  Prepared prepared;
+  if (!preflight(preflight_request(r, use_threads(r.threads)), prepared, std::cout))
+    return kExitBadInput;
+  const sim::Scenario& s = r.scenario;
+  std::cout << options.scenario << ": ok (" << s.materials.size() << " materials, "
+            << s.bodies.size() << " bodies, " << s.stages.size() << " stages)\n";
+  return kExitOk;
 }
 
 int resume_command(const ResumeOptions& options) {
@@ -205,6 +193,7 @@ int resume_command(const ResumeOptions& options) {
   r.source.scenario_file = checkpoint.scenario_file;
   r.source.checkpoint_every = options.checkpoint_every;
   r.threads = options.threads;
+  r.allow_long = options.allow_long;
   r.checkpoint = &checkpoint;
   return execute(r);
 }

@@ -57,6 +57,7 @@ RunObserver::RunObserver(const sim::Scenario& scenario, fs::path out, int thread
       next_checkpoint_(source_.checkpoint_every),
       recorder_(std::move(recorder)),
       series_(scenario, out_) {
+  progress_.set_stages(scenario.stages);
   for (const sim::StageSpec& s : scenario.stages)
     if (s.type != sim::StageType::MaterialChange && sim::stage_is_painted(scenario, s))
       last_painted_stage_ = s.name;

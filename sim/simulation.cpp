@@ -89,6 +89,16 @@ double Simulation::choose_time_step(double max_signal) const {
   return dt;
 }
 
+double Simulation::next_time_step() const {
+  const double signal = progress_.started ? progress_.max_signal : max_signal_speed(world_);
+  try {
+    return choose_time_step(signal);
+  } catch (const SimulationError& e) {
+    throw ScenarioError(scenario_.source_path + ": " + e.what() +
+                        ": expected a fixed step at most the bound, or time_step.courant");
+  }
+}
+
 bool Simulation::at_rest(const StageSpec& stage, const StageResult& r) const {
   if (!stage.rest.enabled || stage_time_ < stage.rest.min_time) return false;
   if (stage.type == StageType::Gravity && stage_time_ < stage.ramp_fraction * stage.duration)

@@ -72,6 +72,8 @@ class Simulation {
   double stage_time() const { return stage_time_; }  // since the start of this stage
   const std::vector<StageResult>& results() const { return results_; }
   std::size_t stage_index() const { return stage_index_; }  // the stage running or next
+  // Whether stage_index() has begun (a state saved mid-stage) and stage_time() counts in it.
+  bool stage_started() const { return progress_.started; }
   // The timed stage running now as stage_ends would report it if it ended
   // here: its sums so far, its energy balance (Eq. 3) closed at the present
   // state, the kinetic energies of the last step (before the first step of
@@ -79,6 +81,11 @@ class Simulation {
   // step before it). Metrics are left empty (measure_stage when needed).
   // Call it between steps of a timed stage (from frame() or progress()).
   StageResult stage_so_far() const;
+  // The time step the next step would take, at the present state (before
+  // the first step: at rest, or as restored). A fixed time_step above the
+  // stable bound there is bad input, not a failed run: throws ScenarioError
+  // naming the value and the bound, so `landslide check` refuses it.
+  double next_time_step() const;
 
  private:
   void run_timed_stage(const StageSpec& stage, Observer& observer);

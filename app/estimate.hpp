@@ -1,0 +1,74 @@
+// What a run will cost, worked out before it starts (`landslide check` prints
+// it, `landslide run` prints it at its start): points, grid nodes, the first
+// time step, steps, frames, disk, memory and wall time, and the limits past
+// which a run is refused unless --allow-long. README.md ("What a run will
+// cost") documents every figure and how it was measured.
+#pragma once
+
+#include <filesystem>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "sim/simulation.hpp"
+
+namespace app {
+
+// Measured figures the estimate is built on (README.md, "What a run will
+// cost"): peak resident memory of `landslide run` against points and nodes,
+// and the bytes and painting time of a frame.
+constexpr double kBaseMemoryBytes = 64e6;      // the process with nothing to simulate
+constexpr double kBytesPerPoint = 400;         // 360..375 measured (VmHWM)
+constexpr double kBytesPerNode = 100;          // 94 measured
+constexpr double kVtkBytesPerPoint = 280;      // 268 measured (ASCII .vtu)
+constexpr double kFrameBytesPerPixel = 0.3;    // PNG 0.08 measured; GIF copy and videos
+constexpr double kPaintSecondsPerPixel = 0.2e-6;  // 0.18 us measured, painting and encoding
+
+// The limits a run is refused past unless --allow-long.
+constexpr double kMaxWallSeconds = 4 * 3600.0;
+constexpr double kMaxSteps = 2e6;         // 18 times the finest shipped scene's 112,000
+constexpr double kMaxDiskBytes = 1024.0 * 1024 * 1024;
+
+struct StageSteps {
+  std::string name;
+  double steps = 0;
+  bool may_end_early = false;  // stop_at_rest: fewer if it comes to rest
+};
+
+struct Estimate {
+  std::size_t points = 0, nodes = 0;
+  double dt = 0;  // the first step's
+  std::vector<StageSteps> stages;  // the timed stages still to run
+  double steps = 0, point_steps = 0;
+  bool may_end_early = false;
+  double frames = 0;  // per field
+  int frame_width = 0, frame_height = 0;  // full size; the GIF's copy is smaller
+  int fields = 0;
+  double states = 0;  // VTK states
+  double disk_bytes = 0, memory_bytes = 0;
+  double point_steps_per_second = 0;  // calibrated now (calibrate_step_rate)
+  int threads = 1;
+  double wall_seconds = 0;
+  // Where memory and disk are checked against what the machine has.
+  double available_memory_bytes = 0;  // MemAvailable; 0 if unknown
+  double free_disk_bytes = 0;         // on the output's file system; 0 if unknown
+};
+
+// Point-steps per second of the GIMP step on this machine with the present
+// OpenMP threads: a built-in 7,680-point soil block stepped for about 0.15 s
+// of wall time (figures vary from run to run; never assert them).
+double calibrate_step_rate();
+
+// The estimate for `sim` as it stands (fresh, or restored), whose frames are
+// width x height pixels (0 x 0 when it paints none); `out` locates the disk
+// it writes to ("" when unknown). Throws what sim.next_time_step() throws.
+Estimate estimate_run(const sim::Simulation& sim, int width, int height,
+                      const std::filesystem::path& out, int threads);
+
+void print_estimate(std::ostream& o, const Estimate& e);
+
+// The first limit the estimate passes, as an error message naming the file,
+// the figure and the limit; "" if none.
+std::string limit_passed(const Estimate& e, const std::string& file);
+
+}  // namespace app
