@@ -18,7 +18,7 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1, 1024));
   run_cmd->add_option("--checkpoint-every", run.checkpoint_every,
                       "Write OUT/checkpoint.lsck every this many seconds of simulated time "
-                      "(Ctrl-C always writes one)")
+                      "(Ctrl-C and SIGTERM always write one)")
       ->check(CLI::PositiveNumber);
   run_cmd->add_option("--state-cache", run.state_cache,
                       "Folder of saved gravity-stage states: start from a matching one, save "

@@ -146,9 +146,8 @@ int execute(RunSetup& r) {
     release_interrupt();
     std::cerr << "\nstopped at t = " << stop.time << " s; continue with: landslide resume "
               << r.out.string() << '\n';
-    observer->write_summary(*simulation, "interrupted at t = " + std::to_string(stop.time) +
-                                             " s (checkpoint.lsck)");
-    return kExitInterrupted;
+    observer->write_summary(*simulation, stop.status());
+    return stop.exit_status();
   } catch (const std::exception& e) {
     release_interrupt();
     std::cerr << "\nerror: " << e.what() << '\n';

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "app/checkpoint.hpp"
+#include "app/commands.hpp"
 #include "app/state_cache.hpp"
 #include "app/summary.hpp"
 #include "sim/atomic_file.hpp"
@@ -21,14 +22,21 @@ namespace fs = std::filesystem;
 
 namespace {
 
+// The signal that asked the run to stop (SIGINT or SIGTERM); 0: none.
 volatile std::sig_atomic_t interrupt_requested = 0;
 
-extern "C" void on_interrupt(int) {
-  interrupt_requested = 1;
-  static const char msg[] =
+extern "C" void on_interrupt(int signal) {
+  interrupt_requested = signal;
+  // Only write(2) is safe here: no formatting, so one fixed text per signal.
+  static const char ctrl_c[] =
       "\nCtrl-C: stopping after this step and writing a checkpoint (Ctrl-C again quits at "
       "once)\n";
-  [[maybe_unused]] const ssize_t n = ::write(2, msg, sizeof msg - 1);
+  static const char term[] =
+      "\nSIGTERM: stopping after this step and writing a checkpoint (a second SIGTERM quits "
+      "at once)\n";
+  const bool is_term = signal == SIGTERM;
+  [[maybe_unused]] const ssize_t n =
+      ::write(2, is_term ? term : ctrl_c, is_term ? sizeof term - 1 : sizeof ctrl_c - 1);
 }
 
 double seconds_since(std::chrono::steady_clock::time_point t) {
@@ -38,6 +46,8 @@ double seconds_since(std::chrono::steady_clock::time_point t) {
 
 }  // namespace
 
+// SIGTERM is what `timeout`, `kill` and batch schedulers send before they
+// give up on a job: it must leave a checkpoint just as Ctrl-C does.
 void catch_interrupt() {
   interrupt_requested = 0;
   struct sigaction sa {};
@@ -45,9 +55,22 @@ void catch_interrupt() {
   sa.sa_flags = SA_RESETHAND;
   sigemptyset(&sa.sa_mask);
   sigaction(SIGINT, &sa, nullptr);
+  sigaction(SIGTERM, &sa, nullptr);
 }
 
-void release_interrupt() { std::signal(SIGINT, SIG_DFL); }
+void release_interrupt() {
+  std::signal(SIGINT, SIG_DFL);
+  std::signal(SIGTERM, SIG_DFL);
+}
+
+std::string Interrupted::status() const {
+  return std::string("interrupted") + (signal == SIGTERM ? " by SIGTERM" : "") + " at t = " +
+         std::to_string(time) + " s (checkpoint.lsck)";
+}
+
+int Interrupted::exit_status() const {
+  return signal == SIGTERM ? kExitTerminated : kExitInterrupted;
+}
 
 RunObserver::RunObserver(const sim::Scenario& scenario, fs::path out, int threads,
                          std::unique_ptr<FrameRecorder> recorder, RunSource source)
@@ -119,7 +142,7 @@ void RunObserver::progress(const sim::Simulation& sim, const sim::StageSpec& sta
   if (!due && !interrupt_requested) return;
   write_checkpoint(sim);
   if (every > 0) next_checkpoint_ = (std::floor(sim.time() / every) + 1) * every;
-  if (interrupt_requested) throw Interrupted{sim.time()};
+  if (interrupt_requested) throw Interrupted{sim.time(), int(interrupt_requested)};
 }
 
 void RunObserver::stage_ends(const sim::Simulation& sim, const sim::StageSpec& stage,
