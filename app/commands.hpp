@@ -85,4 +85,9 @@ struct ValidateOptions {
 };
 int validate_command(const ValidateOptions& options);
 
+// Whether `dir` (of validate or gallery: --scenarios if `given`, else
+// ./scenarios) is a folder; if not, says so on stderr with a hint at
+// --scenarios.
+bool scenarios_folder_found(const std::string& dir, bool given, const std::string& command);
+
 }  // namespace app

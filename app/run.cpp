@@ -14,6 +14,7 @@
 
 #include "app/checkpoint.hpp"
 #include "app/commands.hpp"
+#include "app/counted.hpp"
 #include "app/frames.hpp"
 #include "app/run_observer.hpp"
 #include "app/state_cache.hpp"
@@ -30,8 +31,9 @@ namespace fs = std::filesystem;
 int check_command(const std::string& path) {
   try {
     const sim::Scenario s = sim::load_scenario(path);
-    std::cout << path << ": ok (" << s.materials.size() << " materials, " << s.bodies.size()
-              << " bodies, " << s.stages.size() << " stages)\n";
+    std::cout << path << ": ok (" << counted(s.materials.size(), "material") << ", "
+              << counted(s.bodies.size(), "body", "bodies") << ", "
+              << counted(s.stages.size(), "stage") << ")\n";
     return kExitOk;
   } catch (const sim::ScenarioError& e) {
     std::cerr << "error: " << e.what() << '\n';
@@ -122,7 +124,7 @@ int execute(RunSetup& r) {
     fs::create_directories(r.out);
     std::cerr << "landslide " << LANDSLIDE_VERSION << ": " << r.scenario.name << ", "
               << simulation->world().points.size() << " points, h = " << r.scenario.cell_size
-              << " m, " << threads << " threads -> " << r.out.string() << '\n';
+              << " m, " << counted(threads, "thread") << " -> " << r.out.string() << '\n';
     if (r.checkpoint)
       std::cerr << "resuming at t = " << simulation->time() << " s from "
                 << checkpoint_path(r.out).string() << '\n';
