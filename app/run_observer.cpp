@@ -291,7 +291,8 @@ void RunObserver::write_state(const sim::Simulation& sim, const sim::StageSpec& 
                           {"stage_time_s", sim.stage_time()}};
   entry["frame"] = frame >= 0 ? nlohmann::json(frame) : nlohmann::json(nullptr);
   states_.push_back(entry);
-  const nlohmann::json doc = {{"states", states_}};
+  // The scenario's name: `landslide render` refuses another scenario's.
+  const nlohmann::json doc = {{"scenario", sim.scenario().name}, {"states", states_}};
   sim::write_file_atomically((out_ / "vtk" / "states.json").string(),
                              [&](std::ostream& o) { o << doc.dump(1) << '\n'; });
 }
