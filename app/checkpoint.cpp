@@ -1,9 +1,6 @@
 #include "app/checkpoint.hpp"
 
-#include <fstream>
-#include <sstream>
-
-#include "sim/atomic_file.hpp"
+#include "app/checksum.hpp"
 #include "sim/binary_io.hpp"
 
 namespace app {
@@ -12,8 +9,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// "LSCHECK" and a format version.
-constexpr std::uint64_t kMagic = 0x4c53434845434b02ULL;
+// "LSCHECK" and a format version (3: a CRC-32 after the content).
+constexpr std::uint64_t kMagic = 0x4c53434845434b03ULL;
+constexpr std::uint64_t kMagicWithoutChecksum = 0x4c53434845434b02ULL;
 // Every frame of a run can be pending (they are painted at the end): at most
 // 100000 per stage, so a bound far above any real run.
 constexpr std::uint64_t kMaxPending = 100000000;
@@ -45,22 +43,21 @@ void write_checkpoint(const fs::path& file, const Checkpoint& c) {
     w.put_string(f.stage);
   }
   put_extent(w, c.extent);
-  sim::write_file_atomically(file.string(), [&](std::ostream& o) {
-    o.write(w.bytes().data(), std::streamsize(w.bytes().size()));
-  });
+  append_checksum(w);
+  write_bytes_atomically(file, w);
 }
 
 Checkpoint read_checkpoint(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in)
-    throw sim::StateError(file.string() + ": no checkpoint here (a run writes one with "
-                                          "--checkpoint-every, or when stopped by Ctrl-C)");
-  std::ostringstream text;
-  text << in.rdbuf();
-  const std::string bytes = text.str();
+  std::string bytes = read_file_bytes(
+      file, file.string() + ": no checkpoint here (a run writes one with --checkpoint-every, "
+                            "or when stopped by Ctrl-C or SIGTERM)");
   sim::BinaryReader r(bytes, file.string());
-  if (bytes.size() < 8 || r.get<std::uint64_t>() != kMagic)
-    r.fail("not a checkpoint written by this version of landslide");
+  const std::uint64_t magic = bytes.size() < 8 ? 0 : r.get<std::uint64_t>();
+  if (magic == kMagicWithoutChecksum)
+    r.fail("a checkpoint of an older landslide, without a checksum; this version cannot "
+           "resume it");
+  if (magic != kMagic) r.fail("not a checkpoint written by this version of landslide");
+  strip_checksum(bytes, file);  // r reads `bytes` by reference: the checksum is gone for it too
   Checkpoint c;
   c.scenario_text = r.get_string();
   c.scenario_file = r.get_string();

@@ -1,6 +1,6 @@
 // The subcommands of `landslide`. Each returns the process exit status:
 // 0 done, 2 bad input (nothing written), 1 the run failed, 130 stopped by
-// Ctrl-C after writing a checkpoint.
+// Ctrl-C and 143 by SIGTERM, after writing a checkpoint.
 #pragma once
 
 #include <optional>
@@ -14,6 +14,9 @@ constexpr int kExitOk = 0;
 constexpr int kExitFailed = 1;
 constexpr int kExitBadInput = 2;
 constexpr int kExitInterrupted = 130;  // 128 + SIGINT, as shells report it
+// 128 + SIGTERM: a job script tells "stopped by its scheduler or `timeout`"
+// from Ctrl-C, and either way the checkpoint is there.
+constexpr int kExitTerminated = 143;
 
 struct RunOptions {
   std::string scenario;
@@ -89,5 +92,10 @@ struct ValidateOptions {
   bool finest = false;    // adds the Bui column at h = 1.25 mm
 };
 int validate_command(const ValidateOptions& options);
+
+// Whether `dir` (of validate or gallery: --scenarios if `given`, else
+// ./scenarios) is a folder; if not, says so on stderr with a hint at
+// --scenarios.
+bool scenarios_folder_found(const std::string& dir, bool given, const std::string& command);
 
 }  // namespace app

@@ -1,17 +1,15 @@
 #include "app/frame_file.hpp"
 
-#include <fstream>
-#include <sstream>
-
-#include "sim/atomic_file.hpp"
+#include "app/checksum.hpp"
 #include "sim/binary_io.hpp"
 
 namespace app {
 
 namespace {
 
-// "LSFRAME" and a format version (2: with the material ids).
-constexpr std::uint64_t kMagic = 0x4c534652414d4502ULL;
+// "LSFRAME" and a format version (2: with the material ids, 3: a CRC-32
+// after the content).
+constexpr std::uint64_t kMagic = 0x4c534652414d4503ULL;
 constexpr std::uint64_t kMaxFields = 64;
 
 }  // namespace
@@ -28,20 +26,17 @@ void write_frame_file(const std::filesystem::path& file, const Frame& f) {
   w.put(std::uint64_t(f.values.size()));
   for (const std::vector<float>& v : f.values) w.put_vector(v);
   w.put_vector(f.material);
-  sim::write_file_atomically(file.string(), [&](std::ostream& o) {
-    o.write(w.bytes().data(), std::streamsize(w.bytes().size()));
-  });
+  append_checksum(w);
+  write_bytes_atomically(file, w);
 }
 
 Frame read_frame_file(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw sim::StateError(file.string() + ": cannot read the captured frame");
-  std::ostringstream text;
-  text << in.rdbuf();
-  const std::string bytes = text.str();
+  std::string bytes =
+      read_file_bytes(file, file.string() + ": cannot read the captured frame");
   sim::BinaryReader r(bytes, file.string());
   if (bytes.size() < 8 || r.get<std::uint64_t>() != kMagic)
     r.fail("not a frame captured by this version of landslide");
+  strip_checksum(bytes, file);  // r reads `bytes` by reference: the checksum is gone for it too
   Frame f;
   f.number = r.get<int>();
   f.time = r.get<double>();

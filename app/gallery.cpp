@@ -244,6 +244,8 @@ int gallery_command(const GalleryOptions& o) {
     return kExitBadInput;
   }
   const fs::path scenarios = o.scenarios.empty() ? fs::path("scenarios") : fs::path(o.scenarios);
+  if (!scenarios_folder_found(scenarios.string(), !o.scenarios.empty(), "landslide gallery"))
+    return kExitBadInput;
   for (const char* f : {"paper-slope-phi20.json", "paper-slope-phi25.json",
                         "paper-slope-phi15.json", "paper-slope-phi10.json",
                         "paper-slope-phi20-n1648.json", "paper-slope-phi20-n28724.json",

@@ -3,7 +3,29 @@
 #include "landslide_version.hpp"
 #include <CLI/CLI.hpp>
 
+#include <cmath>
+#include <functional>
+#include <sstream>
+
 #include "app/commands.hpp"
+
+namespace {
+
+// --checkpoint-every: CLI::PositiveNumber would answer 0 with its range, a
+// number of 309 digits; this says what the value means.
+std::function<void(double)> positive_seconds(double& target) {
+  return [&target](double v) {
+    if (!(v > 0) || !std::isfinite(v)) {
+      std::ostringstream msg;
+      msg << "--checkpoint-every = " << v
+          << ": expected a positive (finite) number of simulated seconds";
+      throw CLI::ValidationError(msg.str());
+    }
+    target = v;
+  };
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   CLI::App cli{"Landslide Studio: GIMP landslide simulation, painted off-screen"};
@@ -16,10 +38,10 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--out", run.out_dir, "Output directory")->required();
   run_cmd->add_option("--threads", run.threads, "OpenMP threads (default: all cores)")
       ->check(CLI::Range(1, 1024));
-  run_cmd->add_option("--checkpoint-every", run.checkpoint_every,
-                      "Write OUT/checkpoint.lsck every this many seconds of simulated time "
-                      "(Ctrl-C always writes one)")
-      ->check(CLI::PositiveNumber);
+  run_cmd->add_option_function<double>(
+      "--checkpoint-every", positive_seconds(run.checkpoint_every),
+      "Write OUT/checkpoint.lsck every this many seconds of simulated time (Ctrl-C and "
+      "SIGTERM always write one)");
   run_cmd->add_option("--state-cache", run.state_cache,
                       "Folder of saved gravity-stage states: start from a matching one, save "
                       "this run's if there is none");
@@ -35,9 +57,9 @@ int main(int argc, char** argv) {
   resume_cmd->add_option("dir", resume.dir, "The stopped run's output directory")->required();
   resume_cmd->add_option("--threads", resume.threads, "OpenMP threads (default: all cores)")
       ->check(CLI::Range(1, 1024));
-  resume_cmd->add_option("--checkpoint-every", resume.checkpoint_every,
-                         "Go on writing checkpoints every this many simulated seconds")
-      ->check(CLI::PositiveNumber);
+  resume_cmd->add_option_function<double>(
+      "--checkpoint-every", positive_seconds(resume.checkpoint_every),
+      "Go on writing checkpoints every this many simulated seconds");
   resume_cmd->add_flag("--allow-long", resume.allow_long,
                        "Go on although the estimate of what is left passes the limits");
 

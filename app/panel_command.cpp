@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "app/commands.hpp"
+#include "app/counted.hpp"
 #include "render/error.hpp"
 #include "render/font.hpp"
 #include "render/panel.hpp"
@@ -46,8 +47,8 @@ render::Image compose(const std::vector<render::Image>& images,
 
 int panel_command(const PanelOptions& o) {
   if (o.items.empty() || o.items.size() % 2 != 0) {
-    std::cerr << "error: expected pairs IMAGE.png CAPTION (got " << o.items.size()
-              << " arguments)\n";
+    std::cerr << "error: expected pairs IMAGE.png CAPTION (got "
+              << counted(o.items.size(), "argument") << ")\n";
     return kExitBadInput;
   }
   if (o.cols < 1) {

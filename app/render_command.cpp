@@ -16,6 +16,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/commands.hpp"
+#include "app/counted.hpp"
 #include "app/frames.hpp"
 #include "app/series_plot.hpp"
 #include "render/error.hpp"
@@ -23,6 +24,7 @@
 #include "render/png_io.hpp"
 #include "render/video.hpp"
 #include "sim/scenario.hpp"
+#include "sim/seed.hpp"
 #include "sim/vtk.hpp"
 
 namespace app {
@@ -70,13 +72,22 @@ struct StateInfo {
   double stage_time = 0;
 };
 
-// vtk/states.json, written by `landslide run` beside its .vtu files.
-std::map<std::string, StateInfo> read_states_json(const fs::path& dir) {
+// vtk/states.json, written by `landslide run` beside its .vtu files. Its
+// "scenario" (the run's scenario name; a file of an older run has none) must
+// be the name of --scenario: another scene's states would be painted under
+// its title, in its domain.
+std::map<std::string, StateInfo> read_states_json(const fs::path& dir,
+                                                  const sim::Scenario& scenario) {
   std::map<std::string, StateInfo> out;
   const fs::path p = dir / "states.json";
   if (!fs::is_regular_file(p)) return out;
   try {
     const nlohmann::json doc = nlohmann::json::parse(read_text(p));
+    if (doc.contains("scenario") && doc.at("scenario").get<std::string>() != scenario.name)
+      throw BadInput(p.string() + ": states of scenario \"" +
+                     doc.at("scenario").get<std::string>() + "\", but --scenario " +
+                     scenario.source_path + " is \"" + scenario.name +
+                     "\": give the scenario the run was made with");
     for (const nlohmann::json& s : doc.at("states")) {
       StateInfo info;
       info.known = true;
@@ -88,6 +99,22 @@ std::map<std::string, StateInfo> read_states_json(const fs::path& dir) {
     throw BadInput(p.string() + ": " + e.what());
   }
   return out;
+}
+
+// A state must hold the points the scenario seeds (a run never adds or
+// removes one), and their materials.
+void check_points_fit(const fs::path& file, const sim::PointState& state,
+                      const sim::Scenario& scenario, std::size_t seeded) {
+  if (state.x.size() != seeded)
+    throw BadInput(file.string() + ": " + counted(state.x.size(), "point") + ", but --scenario " +
+                   scenario.source_path + " seeds " + counted(seeded, "point") +
+                   ": give the scenario the run was made with");
+  for (const int m : state.material)
+    if (m < 0 || std::size_t(m) >= scenario.materials.size())
+      throw BadInput(file.string() + ": material id " + std::to_string(m) + ", but " +
+                     scenario.source_path + " has " +
+                     counted(scenario.materials.size(), "material") +
+                     ": is this the scenario of the run?");
 }
 
 // Removes earlier numbered frames (000000.png ...) so a video of the folder
@@ -112,6 +139,7 @@ struct Job {
   std::vector<fs::path> files;
   fs::path out;
   bool out_is_file = false;
+  std::size_t points = 0;  // that the scenario seeds
   std::vector<SeriesRow> series;  // with --series
 };
 
@@ -131,10 +159,32 @@ std::vector<SeriesRow> run_series(const fs::path& in) {
   }
 }
 
+// What job.out is: one .png, or a directory. An --out that names another
+// kind of picture or a video would otherwise become a directory of that name.
+void check_out(Job& job, const RenderOptions& o) {
+  static const char* const kOther[] = {".jpg", ".jpeg", ".gif", ".bmp", ".tif", ".tiff",
+                                       ".webp", ".ppm", ".pgm", ".svg", ".pdf", ".eps",
+                                       ".avif", ".mp4", ".webm", ".mov", ".avi", ".mkv"};
+  for (const char* ext : kOther)
+    if (ends_with(job.out.string(), ext))
+      throw BadInput("--out " + job.out.string() + ": landslide render writes PNG only: a "
+                     ".png file (one state) or a directory (--video adds FIELD.mp4 and "
+                     "FIELD.gif in it)");
+  job.out_is_file = ends_with(job.out.string(), ".png");
+  if (job.out_is_file && job.files.size() != 1)
+    throw BadInput("--out " + job.out.string() + ": one PNG file, but there are " +
+                   std::to_string(job.files.size()) + " states; give a directory");
+  if (job.out_is_file && o.video) throw BadInput("--video needs a directory for --out");
+  std::error_code ec;
+  if (!job.out_is_file && fs::exists(job.out, ec) && !fs::is_directory(job.out, ec))
+    throw BadInput("--out " + job.out.string() + ": exists and is not a directory");
+}
+
 Job prepare(const RenderOptions& o) {
   Job job;
   try {
     job.scenario = sim::load_scenario(o.scenario);
+    job.points = sim::make_world(job.scenario).points.size();
   } catch (const sim::ScenarioError& e) {
     throw BadInput(e.what());
   }
@@ -182,13 +232,7 @@ Job prepare(const RenderOptions& o) {
   for (const fs::path& f : job.files)
     if (!fs::is_regular_file(f, ec)) throw BadInput(f.string() + ": listed but missing");
 
-  job.out_is_file = ends_with(job.out.string(), ".png");
-  if (job.out_is_file && job.files.size() != 1)
-    throw BadInput("--out " + job.out.string() + ": one PNG file, but there are " +
-                   std::to_string(job.files.size()) + " states; give a directory");
-  if (job.out_is_file && o.video) throw BadInput("--video needs a directory for --out");
-  if (!job.out_is_file && fs::exists(job.out, ec) && !fs::is_directory(job.out, ec))
-    throw BadInput("--out " + job.out.string() + ": exists and is not a directory");
+  check_out(job, o);
   if (o.video) {
     std::string why;
     if (!render::ffmpeg_available(&why)) throw BadInput("--video: " + why);
@@ -204,10 +248,11 @@ std::vector<Frame> load_frames(const Job& job) {
   std::map<std::string, std::vector<sim::MaterialConstants>> materials;  // per stage
   std::vector<Frame> frames;
   bool unknown_stage = false;
+
   for (std::size_t i = 0; i < job.files.size(); ++i) {
     const fs::path& file = job.files[i];
     const fs::path dir = file.parent_path();
-    if (!infos.count(dir)) infos[dir] = read_states_json(dir);
+    if (!infos.count(dir)) infos[dir] = read_states_json(dir, job.scenario);
     const auto it = infos[dir].find(file.filename().string());
     const StateInfo info = it == infos[dir].end() ? StateInfo{} : it->second;
     unknown_stage |= !info.known;
@@ -221,12 +266,7 @@ std::vector<Frame> load_frames(const Job& job) {
     } catch (const std::exception& e) {
       throw BadInput(e.what());
     }
-    for (const int m : state.material)
-      if (m < 0 || std::size_t(m) >= job.scenario.materials.size())
-        throw BadInput(file.string() + ": material id " + std::to_string(m) + ", but " +
-                       job.scenario.source_path + " has " +
-                       std::to_string(job.scenario.materials.size()) +
-                       " materials: is this the scenario of the run?");
+    check_points_fit(file, state, job.scenario, job.points);
     frames.push_back(capture_frame(state, materials[info.stage], fields, int(i),
                                    info.known ? info.stage_time : state.time, info.stage));
   }
@@ -310,7 +350,7 @@ int render_command(const RenderOptions& o) {
     if (job.out_is_file) {
       std::cout << job.out.string() << '\n';
     } else {
-      std::cout << job.out.string() << "/: " << frames.size() << " frames\n";
+      std::cout << job.out.string() << "/: " << counted(frames.size(), "frame") << '\n';
       if (o.video) {
         const render::VideoFiles v =
             render::encode_video(job.out.string(), job.out.string(), field_name(job.field),

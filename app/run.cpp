@@ -13,6 +13,7 @@
 
 #include "app/checkpoint.hpp"
 #include "app/commands.hpp"
+#include "app/counted.hpp"
 #include "app/frames.hpp"
 #include "app/output_dir.hpp"
 #include "app/preflight.hpp"
@@ -109,7 +110,7 @@ int execute(RunSetup& r) {
     fs::create_directories(r.out);
     std::cerr << "landslide " << LANDSLIDE_VERSION << ": " << r.scenario.name << ", "
               << simulation->world().points.size() << " points, h = " << r.scenario.cell_size
-              << " m, " << threads << " threads -> " << r.out.string() << '\n';
+              << " m, " << counted(threads, "thread") << " -> " << r.out.string() << '\n';
     if (r.checkpoint)
       std::cerr << "resuming at t = " << simulation->time() << " s from "
                 << checkpoint_path(r.out).string() << '\n';
@@ -133,9 +134,8 @@ int execute(RunSetup& r) {
     release_interrupt();
     std::cerr << "\nstopped at t = " << stop.time << " s; continue with: landslide resume "
               << r.out.string() << '\n';
-    observer->write_summary(*simulation, "interrupted at t = " + std::to_string(stop.time) +
-                                             " s (checkpoint.lsck)");
-    return kExitInterrupted;
+    observer->write_summary(*simulation, stop.status());
+    return stop.exit_status();
   } catch (const std::exception& e) {
     release_interrupt();
     std::cerr << "\nerror: " << e.what() << '\n';
@@ -170,8 +170,9 @@ int check_command(const RunOptions& options) {
   if (!preflight(preflight_request(r, use_threads(r.threads)), prepared, std::cout))
     return kExitBadInput;
   const sim::Scenario& s = r.scenario;
-  std::cout << options.scenario << ": ok (" << s.materials.size() << " materials, "
-            << s.bodies.size() << " bodies, " << s.stages.size() << " stages)\n";
+  std::cout << options.scenario << ": ok (" << counted(s.materials.size(), "material") << ", "
+            << counted(s.bodies.size(), "body", "bodies") << ", "
+            << counted(s.stages.size(), "stage") << ")\n";
   return kExitOk;
 }
 

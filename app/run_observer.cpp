@@ -10,6 +10,8 @@
 #include <sstream>
 
 #include "app/checkpoint.hpp"
+#include "app/commands.hpp"
+#include "app/counted.hpp"
 #include "app/state_cache.hpp"
 #include "app/summary.hpp"
 #include "sim/atomic_file.hpp"
@@ -21,14 +23,21 @@ namespace fs = std::filesystem;
 
 namespace {
 
+// The signal that asked the run to stop (SIGINT or SIGTERM); 0: none.
 volatile std::sig_atomic_t interrupt_requested = 0;
 
-extern "C" void on_interrupt(int) {
-  interrupt_requested = 1;
-  static const char msg[] =
+extern "C" void on_interrupt(int signal) {
+  interrupt_requested = signal;
+  // Only write(2) is safe here: no formatting, so one fixed text per signal.
+  static const char ctrl_c[] =
       "\nCtrl-C: stopping after this step and writing a checkpoint (Ctrl-C again quits at "
       "once)\n";
-  [[maybe_unused]] const ssize_t n = ::write(2, msg, sizeof msg - 1);
+  static const char term[] =
+      "\nSIGTERM: stopping after this step and writing a checkpoint (a second SIGTERM quits "
+      "at once)\n";
+  const bool is_term = signal == SIGTERM;
+  [[maybe_unused]] const ssize_t n =
+      ::write(2, is_term ? term : ctrl_c, is_term ? sizeof term - 1 : sizeof ctrl_c - 1);
 }
 
 double seconds_since(std::chrono::steady_clock::time_point t) {
@@ -36,8 +45,27 @@ double seconds_since(std::chrono::steady_clock::time_point t) {
 }
 
 
+// "slump: done at t = ... (at rest), ...": the kinetic energy shown is the
+// one the rest test compares (that of the velocity that moves the points),
+// beside the bound it was compared with; the points' own velocities can keep
+// far more (scenarios/README.md, stop_at_rest), and summary.json has both.
+std::string stage_done_line(const sim::StageSpec& stage, const sim::StageResult& r) {
+  std::ostringstream msg;
+  msg << stage.name << ": done";
+  if (stage.type == sim::StageType::MaterialChange) return msg.str();
+  msg << " at t = " << r.simulated_time << " s" << (r.ended_at_rest ? " (at rest)" : "") << ", "
+      << counted(r.steps, "step") << ", " << r.wall_time << " s wall, moving kinetic energy "
+      << r.moving_kinetic_energy << " J/m";
+  if (stage.rest.enabled)
+    msg << " (at rest once <= " << stage.rest.kinetic_ratio << " x gravity work "
+        << std::max(r.gravity_work, 0.0) << " J/m)";
+  return msg.str();
+}
+
 }  // namespace
 
+// SIGTERM is what `timeout`, `kill` and batch schedulers send before they
+// give up on a job: it must leave a checkpoint just as Ctrl-C does.
 void catch_interrupt() {
   interrupt_requested = 0;
   struct sigaction sa {};
@@ -45,9 +73,22 @@ void catch_interrupt() {
   sa.sa_flags = SA_RESETHAND;
   sigemptyset(&sa.sa_mask);
   sigaction(SIGINT, &sa, nullptr);
+  sigaction(SIGTERM, &sa, nullptr);
 }
 
-void release_interrupt() { std::signal(SIGINT, SIG_DFL); }
+void release_interrupt() {
+  std::signal(SIGINT, SIG_DFL);
+  std::signal(SIGTERM, SIG_DFL);
+}
+
+std::string Interrupted::status() const {
+  return std::string("interrupted") + (signal == SIGTERM ? " by SIGTERM" : "") + " at t = " +
+         std::to_string(time) + " s (checkpoint.lsck)";
+}
+
+int Interrupted::exit_status() const {
+  return signal == SIGTERM ? kExitTerminated : kExitInterrupted;
+}
 
 RunObserver::RunObserver(const sim::Scenario& scenario, fs::path out, int threads,
                          std::unique_ptr<FrameRecorder> recorder, RunSource source)
@@ -120,7 +161,7 @@ void RunObserver::progress(const sim::Simulation& sim, const sim::StageSpec& sta
   if (!due && !interrupt_requested) return;
   write_checkpoint(sim);
   if (every > 0) next_checkpoint_ = (std::floor(sim.time() / every) + 1) * every;
-  if (interrupt_requested) throw Interrupted{sim.time()};
+  if (interrupt_requested) throw Interrupted{sim.time(), int(interrupt_requested)};
 }
 
 void RunObserver::stage_ends(const sim::Simulation& sim, const sim::StageSpec& stage,
@@ -132,14 +173,7 @@ void RunObserver::stage_ends(const sim::Simulation& sim, const sim::StageSpec& s
   if (stage.type != sim::StageType::MaterialChange && sim.scenario().output.vtk == "interval" &&
       last_state_time_ < sim.stage_time())
     write_interval_state(sim, stage, true);
-  std::ostringstream msg;
-  msg << stage.name << ": done";
-  if (stage.type != sim::StageType::MaterialChange) {
-    msg << " at t = " << r.simulated_time << " s" << (r.ended_at_rest ? " (at rest)" : "")
-        << ", " << r.steps << " steps, " << r.wall_time << " s wall, kinetic energy "
-        << r.kinetic_energy << " J/m";
-  }
-  progress_.finish(msg.str());
+  progress_.finish(stage_done_line(stage, r));
   if (!source_.state_cache.empty() && source_.reused_stages == 0 &&
       sim.stage_index() == sim::reusable_stages(sim.scenario()))
     save_cached_state(source_.state_cache, sim, series_.csv());
@@ -215,7 +249,8 @@ void RunObserver::paint(const std::string& stage) {
   const auto start = std::chrono::steady_clock::now();
   const std::size_t frames = recorder_->pending();
   const int files = recorder_->paint_pending();
-  std::cerr << stage << ": painted " << frames << " frames, " << files << " PNG files in "
+  std::cerr << stage << ": painted " << counted(frames, "frame") << ", "
+            << counted(files, "PNG file") << " in "
             << seconds_since(start) << " s\n";
 }
 
@@ -223,7 +258,8 @@ void RunObserver::encode() {
   const auto start = std::chrono::steady_clock::now();
   videos_ = recorder_->encode_videos();
   if (!videos_.empty())
-    std::cerr << "encoded " << videos_.size() << " videos in " << seconds_since(start) << " s\n";
+    std::cerr << "encoded " << counted(videos_.size(), "video") << " in " << seconds_since(start)
+              << " s\n";
 }
 
 // With vtk = "interval": the state at the first step that reaches each
@@ -256,7 +292,8 @@ void RunObserver::write_state(const sim::Simulation& sim, const sim::StageSpec& 
                           {"stage_time_s", sim.stage_time()}};
   entry["frame"] = frame >= 0 ? nlohmann::json(frame) : nlohmann::json(nullptr);
   states_.push_back(entry);
-  const nlohmann::json doc = {{"states", states_}};
+  // The scenario's name: `landslide render` refuses another scenario's.
+  const nlohmann::json doc = {{"scenario", sim.scenario().name}, {"states", states_}};
   sim::write_file_atomically((out_ / "vtk" / "states.json").string(),
                              [&](std::ostream& o) { o << doc.dump(1) << '\n'; });
 }

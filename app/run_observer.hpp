@@ -22,13 +22,19 @@
 
 namespace app {
 
-// Thrown from a step once Ctrl-C was pressed and the checkpoint is written.
+// Thrown from a step once Ctrl-C was pressed (or SIGTERM came) and the
+// checkpoint is written.
 struct Interrupted {
   double time = 0;  // simulated time of the checkpoint
+  int signal = 0;   // SIGINT or SIGTERM
+  // summary.json's status: "interrupted [by SIGTERM] at t = ... s (checkpoint.lsck)".
+  std::string status() const;
+  // kExitInterrupted (SIGINT) or kExitTerminated (SIGTERM).
+  int exit_status() const;
 };
 
-// Ctrl-C asks the run to stop at the end of the current step; a second
-// Ctrl-C ends the process at once (the handler resets itself).
+// Ctrl-C (SIGINT) or SIGTERM asks the run to stop at the end of the current
+// step; a second one ends the process at once (the handler resets itself).
 void catch_interrupt();
 void release_interrupt();
 

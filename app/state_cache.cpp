@@ -1,14 +1,42 @@
 #include "app/state_cache.hpp"
 
 #include <cstdio>
-#include <fstream>
-#include <sstream>
+#include <iostream>
 
+#include "app/checksum.hpp"
 #include "sim/atomic_file.hpp"
 
 namespace app {
 
 namespace fs = std::filesystem;
+
+namespace {
+
+// "LSCACHE" and a format version; then the state and a CRC-32 of it all.
+constexpr std::uint64_t kMagic = 0x4c53434143484501ULL;
+
+// The state saved in `file`, or "" (after saying why) when it is damaged or
+// from an older build: the stages are computed again and the file replaced,
+// which gives the same run (it is deterministic), so a bad cache file never
+// stops a run.
+std::string read_cached_state(const fs::path& file) {
+  try {
+    std::string bytes = read_file_bytes(file, file.string() + ": cannot read");
+    sim::BinaryReader r(bytes, file.string());
+    if (bytes.size() < 8 || r.get<std::uint64_t>() != kMagic)
+      r.fail("not a cached state of this version of landslide (an older build's, without a "
+             "checksum?)");
+    strip_checksum(bytes, file);
+    std::string state = r.get_string();
+    if (!r.at_end()) r.fail("bytes after the end of the cached state");
+    return state;
+  } catch (const sim::StateError& e) {
+    std::cerr << "note: " << e.what() << "; computing the shared stages again and replacing it\n";
+    return "";
+  }
+}
+
+}  // namespace
 
 fs::path cached_state_path(const fs::path& dir, const sim::Scenario& scenario) {
   const std::size_t stages = sim::reusable_stages(scenario);
@@ -29,10 +57,9 @@ std::size_t restore_cached_state(const fs::path& dir, sim::Simulation& sim) {
   // A state saved without its series (by an older build) is computed again.
   if (file.empty() || !fs::exists(file) || !fs::exists(cached_series_path(dir, sim.scenario())))
     return 0;
-  std::ifstream in(file, std::ios::binary);
-  std::ostringstream bytes;
-  bytes << in.rdbuf();
-  sim.restore_state(bytes.str(), file.string());
+  const std::string state = read_cached_state(file);
+  if (state.empty()) return 0;
+  sim.restore_state(state, file.string());
   return sim.stage_index();
 }
 
@@ -44,10 +71,11 @@ void save_cached_state(const fs::path& dir, const sim::Simulation& sim,
   // The series first: a state without one beside it is not used.
   sim::write_file_atomically(cached_series_path(dir, sim.scenario()).string(),
                              [&](std::ostream& o) { o << series_csv; });
-  const std::string state = sim.save_state();
-  sim::write_file_atomically(file.string(), [&](std::ostream& o) {
-    o.write(state.data(), std::streamsize(state.size()));
-  });
+  sim::BinaryWriter w;
+  w.put(kMagic);
+  w.put_string(sim.save_state());
+  append_checksum(w);
+  write_bytes_atomically(file, w);
 }
 
 }  // namespace app

@@ -5,11 +5,13 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <string>
 #include <vector>
 
 #include "app/commands.hpp"
+#include "app/counted.hpp"
 #include "app/validation_cases.hpp"
 #include "sim/scenario.hpp"
 #include "sim/world.hpp"
@@ -55,9 +57,22 @@ void print_table(const std::vector<ValidationRow>& rows) {
 
 }  // namespace
 
+bool scenarios_folder_found(const std::string& dir, bool given, const std::string& command) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(dir, ec)) return true;
+  std::cerr << "error: " << dir << ": no such folder; " << command
+            << (given ? " reads its scenarios from the folder --scenarios names"
+                      : " reads its scenarios from ./scenarios, so run it in the repository's "
+                        "top folder or give --scenarios DIR (the repository's scenarios/)")
+            << '\n';
+  return false;
+}
+
 int validate_command(const ValidateOptions& options) {
   ValidationSuite suite;
   suite.scenarios = options.scenarios.empty() ? "scenarios" : options.scenarios;
+  if (!scenarios_folder_found(suite.scenarios, !options.scenarios.empty(), "landslide validate"))
+    return kExitBadInput;
   suite.quick = options.quick;
   suite.finest = options.finest;
   const auto start = std::chrono::steady_clock::now();
@@ -69,7 +84,7 @@ int validate_command(const ValidateOptions& options) {
       rows.insert(rows.end(), part.begin(), part.end());
     }
   } catch (const sim::ScenarioError& e) {
-    std::cerr << "error: " << e.what() << '\n';
+    std::cerr << "error: " << e.what() << " (--scenarios DIR names the scenarios folder)\n";
     return kExitBadInput;
   } catch (const sim::SimulationError& e) {
     print_table(rows);
@@ -81,8 +96,8 @@ int validate_command(const ValidateOptions& options) {
   for (const ValidationRow& r : rows) failed += r.checked() && !r.passed();
   const double wall =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  std::printf("\n%s suite: %d checks failed, %.1f s wall\n", suite.quick ? "quick" : "full",
-              failed, wall);
+  std::printf("\n%s suite: %s failed, %.1f s wall\n", suite.quick ? "quick" : "full",
+              counted(failed, "check").c_str(), wall);
   return failed == 0 ? kExitOk : kExitFailed;
 }
 

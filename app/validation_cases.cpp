@@ -3,6 +3,7 @@
 // energy balance of the paper's Eq. (3) in every run (the Bui et al. (2008)
 // column is in app/validation_bui.cpp), and the helpers they share
 // (app/validation_util.hpp).
+#include "app/counted.hpp"
 #include "app/validation_cases.hpp"
 
 #include <algorithm>
@@ -36,8 +37,8 @@ class RunProgress : public sim::Observer {
   void stage_ends(const sim::Simulation& sim, const sim::StageSpec& stage,
                   const sim::StageResult& r) override {
     if (stage.type != sim::StageType::MaterialChange)
-      bar_.finish(sim.scenario().name + " " + stage.name + ": " + std::to_string(r.steps) +
-                  " steps, " + fmt("%.1f s wall", r.wall_time));
+      bar_.finish(sim.scenario().name + " " + stage.name + ": " + counted(r.steps, "step") +
+                  ", " + fmt("%.1f s wall", r.wall_time));
   }
 
  private:

@@ -5,7 +5,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 packages=(build-essential cmake ninja-build pkg-config git libeigen3-dev nlohmann-json3-dev
-          libcli11-dev libpng-dev libosmesa6-dev libfreetype-dev fonts-dejavu-core ffmpeg
+          libcli11-dev libpng-dev zlib1g-dev libosmesa6-dev libfreetype-dev fonts-dejavu-core ffmpeg
           libgtest-dev googletest)
 missing=()
 for p in "${packages[@]}"; do

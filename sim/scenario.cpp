@@ -126,10 +126,7 @@ BodySpec parse_body(const Node& node, const Scenario& s,
     fail(name_node,
          "a name no other body has (bodies[" + std::to_string(seen->second) + "] has it)");
   const Node material = required(node, "material");
-  const std::string name = string(material);
-  for (std::size_t i = 0; i < s.materials.size(); ++i)
-    if (s.materials[i].name == name) b.material = static_cast<int>(i);
-  if (b.material < 0) fail(material, "the name of a material in materials");
+  b.material = material_index(material, s.materials);
   if (node.has("rectangle") == node.has("polygon"))
     fail(node, "exactly one of \"rectangle\" or \"polygon\"");
   if (node.has("polygon")) {

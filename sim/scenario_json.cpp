@@ -1,5 +1,7 @@
 #include "sim/scenario_json.hpp"
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <limits>
 #include <set>
@@ -192,9 +194,16 @@ class PathTracker : public nlohmann::json_sax<Json> {
   }
   bool parse_error(std::size_t position, const std::string& token,
                    const Json::exception& e) override {
+    const std::string where = frames_.empty() ? std::string("(top level)") : path();
+    std::size_t start = 0;
+    const std::string literal = non_finite_literal(position, start);
     if (e.id == 406)  // number overflow
-      error = (frames_.empty() ? std::string("(top level)") : path()) + " = " +
-              shorten(token) + ": expected a finite number (this one is too large for a double)";
+      error = where + " = " + shorten(token) +
+              ": expected a finite number (this one is too large for a double)";
+    else if (!literal.empty())
+      error = where + " = " + literal + " at " + location(text_, start) +
+              ": expected a finite number (JSON has no NaN or Infinity; every number of a "
+              "scenario must be finite)";
     else {
       // `position` counts the characters read: the last of them is where
       // the parser gave up.
@@ -222,6 +231,23 @@ class PathTracker : public nlohmann::json_sax<Json> {
     }
     frames_.push_back(Frame{object, {}, {}, 0});
     return true;
+  }
+
+  // NaN, Infinity, inf (with a sign or not: what Python's json module and
+  // printf write) where the parser gave up at `position`, or "". The parser
+  // stops a character or two into the word, so the whole word is looked up.
+  std::string non_finite_literal(std::size_t position, std::size_t& start) const {
+    auto part = [](char c) {
+      return std::isalpha(static_cast<unsigned char>(c)) || c == '-' || c == '+';
+    };
+    start = std::min(position > 0 ? position - 1 : 0, text_.size());
+    while (start > 0 && part(text_[start - 1])) --start;
+    std::size_t end = start;
+    while (end < text_.size() && part(text_[end])) ++end;
+    const std::string word = text_.substr(start, end - start);
+    std::string bare = word.substr(!word.empty() && (word[0] == '-' || word[0] == '+'));
+    for (char& c : bare) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return bare == "nan" || bare == "inf" || bare == "infinity" ? word : "";
   }
 
   // A value ended: the next one in an array has the next index.

@@ -10,6 +10,8 @@ namespace sim {
 
 std::vector<StageSpec> parse_stages(const scenario_json::Node& node,
                                     const std::vector<MaterialSpec>& materials);
+// The index of the material `name` names; fails listing the defined ones.
+int material_index(const scenario_json::Node& name, const std::vector<MaterialSpec>& materials);
 OutputSpec parse_output(const scenario_json::Node& node, const std::vector<StageSpec>& stages);
 
 // Limits checked before anything is allocated: a scene asks for at most

@@ -27,15 +27,25 @@ RestCriterion parse_rest(const Node& node, double duration) {
   return r;
 }
 
+}  // namespace
+
+int material_index(const Node& name, const std::vector<MaterialSpec>& materials) {
+  const std::string wanted = string(name);
+  std::string defined;
+  for (std::size_t i = 0; i < materials.size(); ++i) {
+    if (materials[i].name == wanted) return static_cast<int>(i);
+    defined += (i == 0 ? "\"" : ", \"") + materials[i].name + "\"";
+  }
+  fail(name, "the name of a material in materials (defined: " + defined + ")");
+}
+
+namespace {
+
 // Applies a material-change stage to `materials` (the state at that stage),
 // so later stages and the dilation <= friction rule see the changed values.
 void parse_changes(const Node& node, StageSpec& stage, std::vector<MaterialSpec>& materials) {
   const Node name = required(node, "material", "required for a material-change stage");
-  const std::string material = string(name);
-  int index = -1;
-  for (std::size_t i = 0; i < materials.size(); ++i)
-    if (materials[i].name == material) index = static_cast<int>(i);
-  if (index < 0) fail(name, "the name of a material in materials");
+  const int index = material_index(name, materials);
   MaterialSpec& m = materials[index];
   const Node set = required(node, "set", "required for a material-change stage");
   if (m.model == MaterialModel::MohrCoulomb)

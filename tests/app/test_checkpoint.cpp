@@ -1,5 +1,5 @@
-// Checkpoints lose nothing: a run killed (SIGKILL) or stopped by Ctrl-C
-// (SIGINT) and continued with `landslide resume` writes byte for byte the
+// Checkpoints lose nothing: a run killed (SIGKILL), stopped by Ctrl-C
+// (SIGINT) or by SIGTERM and continued with `landslide resume` writes byte for byte the
 // frames, states and videos of a run that never stopped, with the frames
 // captured before the stop waiting in DIR/.frames-pending/. The real binary
 // runs in a child process, so the kill is a real one.
@@ -106,6 +106,32 @@ class Checkpoints : public ::testing::Test {
     return app::resume_command(r);
   }
 
+  // A run of the scene into root_/first sharing the cache root_/cache.
+  app::RunOptions cached_run() const {
+    app::RunOptions o;
+    o.scenario = scene_.string();
+    o.threads = 1;
+    o.state_cache = (root_ / "cache").string();
+    o.out_dir = (root_ / "first").string();
+    return o;
+  }
+
+  // Stops a run with `signal`, expects `exit_status`, a checkpoint and an
+  // "interrupted" summary, then resumes it and compares every output with
+  // the run that never stopped. Returns the stopped run's summary status.
+  std::string stop_and_resume(const fs::path& cut, int signal, int exit_status) {
+    const int status = run_and_stop(scene_, cut, signal);
+    EXPECT_TRUE(WIFEXITED(status)) << "the run did not exit by itself after the signal";
+    EXPECT_EQ(WEXITSTATUS(status), exit_status);
+    EXPECT_TRUE(fs::exists(cut / "checkpoint.lsck"));
+    const auto summary = nlohmann::json::parse(read_bytes(cut / "summary.json"));
+    const std::string text = summary.at("status").get<std::string>();
+    EXPECT_EQ(text.rfind("interrupted", 0), 0u) << text;
+    EXPECT_EQ(resume(cut), app::kExitOk);
+    expect_same_outputs(root_ / "whole", cut);
+    return text;
+  }
+
   fs::path root_, scene_;
 };
 
@@ -120,14 +146,7 @@ TEST_F(Checkpoints, ResumeAfterKillIsByteIdentical) {
 
 TEST_F(Checkpoints, CtrlCWritesACheckpointAndExits130) {
   const fs::path cut = root_ / "interrupted";
-  const int status = run_and_stop(scene_, cut, SIGINT);
-  ASSERT_TRUE(WIFEXITED(status));
-  EXPECT_EQ(WEXITSTATUS(status), app::kExitInterrupted);
-  const auto summary = nlohmann::json::parse(read_bytes(cut / "summary.json"));
-  EXPECT_EQ(summary.at("status").get<std::string>().rfind("interrupted", 0), 0u)
-      << summary.at("status");
-  EXPECT_EQ(resume(cut), app::kExitOk);
-  expect_same_outputs(root_ / "whole", cut);
+  stop_and_resume(cut, SIGINT, app::kExitInterrupted);
   // The run saved its gravity stage, and that stage's series, for the next
   // scene that shares it.
   std::vector<std::string> cached;
@@ -139,12 +158,16 @@ TEST_F(Checkpoints, CtrlCWritesACheckpointAndExits130) {
   EXPECT_EQ(cached[0].substr(0, cached[0].size() - 11) + ".state", cached[1]);
 }
 
+// What `timeout` and batch schedulers send: handled as Ctrl-C is, with its
+// own exit status.
+TEST_F(Checkpoints, SigtermWritesACheckpointAndExits143) {
+  const fs::path cut = root_ / "terminated";
+  const std::string status = stop_and_resume(cut, SIGTERM, app::kExitTerminated);
+  EXPECT_NE(status.find("SIGTERM"), std::string::npos) << status;
+}
+
 TEST_F(Checkpoints, AReusedGravityStageGivesTheSameOutputs) {
-  app::RunOptions o;
-  o.scenario = scene_.string();
-  o.threads = 1;
-  o.state_cache = (root_ / "cache").string();
-  o.out_dir = (root_ / "first").string();
+  app::RunOptions o = cached_run();
   ASSERT_EQ(app::run_command(o), app::kExitOk);  // computes and saves the gravity stage
   o.out_dir = (root_ / "second").string();
   ASSERT_EQ(app::run_command(o), app::kExitOk);  // starts from it
@@ -177,6 +200,70 @@ TEST_F(Checkpoints, StatesAtAnIntervalResumeByteIdentical) {
   for (const auto& e : fs::directory_iterator(cut / "vtk"))
     states += std::regex_match(e.path().filename().string(), state);
   EXPECT_EQ(states, 11 + 21);
+}
+
+// One byte flipped anywhere, or the file cut short: the CRC-32 after the
+// content no longer matches, and resume says so, naming the file, before it
+// writes anything. The undamaged file then resumes as ever.
+TEST_F(Checkpoints, ResumeRefusesACheckpointWhoseChecksumDoesNotMatch) {
+  const fs::path cut = root_ / "damaged";
+  ASSERT_TRUE(WIFSIGNALED(run_and_stop(scene_, cut, SIGKILL)));
+  const fs::path file = cut / "checkpoint.lsck";
+  const std::string good = read_bytes(file);
+  ASSERT_GT(good.size(), 1000u);
+  auto refused = [&](const std::string& bytes, const std::string& what) {
+    std::ofstream(file, std::ios::binary | std::ios::trunc) << bytes;
+    const auto before = fs::last_write_time(cut / "summary.json");
+    testing::internal::CaptureStderr();
+    EXPECT_EQ(resume(cut), app::kExitBadInput) << what;
+    const std::string text = testing::internal::GetCapturedStderr();
+    EXPECT_NE(text.find(file.string() + ": its checksum does not match its content"),
+              std::string::npos)
+        << what << ": " << text;
+    EXPECT_EQ(fs::last_write_time(cut / "summary.json"), before) << what;
+  };
+  for (const std::size_t at : {good.size() / 2, good.size() - 1, std::size_t(8)}) {
+    std::string bytes = good;
+    bytes[at] = static_cast<char>(bytes[at] ^ 0x10);
+    refused(bytes, "byte " + std::to_string(at) + " flipped");
+  }
+  refused(good.substr(0, good.size() - 1), "last byte cut");
+  refused(good.substr(0, good.size() / 2), "cut in half");
+  std::ofstream(file, std::ios::binary | std::ios::trunc) << good;
+  EXPECT_EQ(resume(cut), app::kExitOk);
+  expect_same_outputs(root_ / "whole", cut);
+}
+
+// A damaged cached gravity state is not used (nor is the run stopped): the
+// stages are computed again, giving the same outputs, and the file replaced.
+TEST_F(Checkpoints, ADamagedCachedStateIsComputedAgainAndReplaced) {
+  app::RunOptions o = cached_run();
+  ASSERT_EQ(app::run_command(o), app::kExitOk);
+  fs::path state;
+  for (const auto& e : fs::directory_iterator(root_ / "cache"))
+    if (e.path().extension() == ".state") state = e.path();
+  ASSERT_FALSE(state.empty());
+  std::string bad = read_bytes(state);
+  bad[bad.size() / 2] = static_cast<char>(bad[bad.size() / 2] ^ 0x01);
+  std::ofstream(state, std::ios::binary | std::ios::trunc) << bad;
+  o.out_dir = (root_ / "second").string();
+  testing::internal::CaptureStderr();
+  EXPECT_EQ(app::run_command(o), app::kExitOk);
+  const std::string text = testing::internal::GetCapturedStderr();
+  EXPECT_NE(text.find(state.string() + ": its checksum does not match its content"),
+            std::string::npos)
+      << text;
+  EXPECT_EQ(text.find("starting after stage"), std::string::npos) << text;
+  expect_same_outputs(root_ / "whole", root_ / "second");
+  // The replacement (it holds wall times, so other bytes) is whole: the
+  // next run starts from it.
+  o.out_dir = (root_ / "third").string();
+  testing::internal::CaptureStderr();
+  EXPECT_EQ(app::run_command(o), app::kExitOk);
+  const std::string third = testing::internal::GetCapturedStderr();
+  EXPECT_NE(third.find("starting after stage 'settle' from " + state.string()), std::string::npos)
+      << third;
+  expect_same_outputs(root_ / "whole", root_ / "third");
 }
 
 TEST_F(Checkpoints, ResumeRefusesAMissingOrDamagedCheckpoint) {

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -202,6 +203,45 @@ TEST_F(RunFrames, RenderRefusesBadArguments) {
 }
 
 // Determinism: the same scene with two threads paints byte-identical PNGs.
+// Another scene's states would be painted under its title, in its domain.
+TEST_F(RunFrames, RenderRefusesAnotherScenarioAndOtherImageTypes) {
+  auto refusal = [&](const std::string& scene, const std::string& out) {
+    const fs::path file = root_ / "other.json";
+    std::ofstream(file) << scene;
+    app::RenderOptions o;
+    o.input = out_.string();
+    o.scenario = file.string();
+    o.field = "velocity";
+    o.out = (root_ / out).string();
+    testing::internal::CaptureStderr();
+    const int status = app::render_command(o);
+    const std::string text = testing::internal::GetCapturedStderr();
+    EXPECT_EQ(status, app::kExitBadInput) << text;
+    EXPECT_FALSE(fs::exists(o.out)) << o.out;
+    EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 1) << text;
+    return text;
+  };
+  auto changed = [](std::string text, const std::string& from, const std::string& to) {
+    return text.replace(text.find(from), from.size(), to);
+  };
+  const std::string renamed = changed(kScene, R"("tiny-block")", R"("other-block")");
+  EXPECT_NE(refusal(renamed, "renamed").find("states.json: states of scenario \"tiny-block\", "
+                                             "but --scenario " + (root_ / "other.json").string() +
+                                             " is \"other-block\""),
+            std::string::npos);
+  // Same name, other points (a states.json of an older run has no name):
+  // 2 x 2 points in each of 8 + 2 cells, 3 x 3 in the denser scene.
+  const std::string denser = changed(kScene, R"("points_per_cell": 2)", R"("points_per_cell": 3)");
+  const std::string text = refusal(denser, "denser");
+  EXPECT_NE(text.find("frame-000000.vtu: 40 points, but --scenario"), std::string::npos) << text;
+  EXPECT_NE(text.find(" seeds 90 points: give the scenario the run was made with"),
+            std::string::npos)
+      << text;
+  for (const char* out : {"x.jpg", "x.JPEG", "x.gif", "x.mp4"})
+    EXPECT_NE(refusal(kScene, out).find(": landslide render writes PNG only"), std::string::npos)
+        << out;
+}
+
 TEST_F(RunFrames, TwoThreadsPaintTheSamePngs) {
   app::RunOptions o;
   o.scenario = scenario_.string();

@@ -165,9 +165,11 @@ const std::vector<BadCase>& bad_cases() {
        {"stages[2].type = \"quake\": expected one of \"gravity\", \"material-change\", "
         "\"dynamic\""}},
       {"UnknownMaterialInBody", [](Json& d) { d["bodies"][1]["material"] = "clay"; },
-       {"bodies[1].material = \"clay\": expected the name of a material in materials"}},
+       {"bodies[1].material = \"clay\": expected the name of a material in materials "
+        "(defined: \"bedrock\", \"house\", \"soil\")"}},
       {"UnknownMaterialInStage", [](Json& d) { d["stages"][1]["material"] = "clay"; },
-       {"stages[1].material = \"clay\": expected the name of a material in materials"}},
+       {"stages[1].material = \"clay\": expected the name of a material in materials "
+        "(defined: \"bedrock\", \"house\", \"soil\")"}},
       {"DuplicateStageName", [](Json& d) { d["stages"][2]["name"] = "settle"; },
        {"stages[2].name = \"settle\": expected a name no other stage has (stages[0] has it)"}},
       {"DuplicateBodyName", [](Json& d) { d["bodies"][2]["name"] = "slope"; },
@@ -291,6 +293,28 @@ TEST(ScenarioErrorsText, OverflowingNumberNamesItsPath) {
   EXPECT_EQ(message_of([] { sim::parse_scenario("1e400", "scn.json"); }),
             "scn.json: (top level) = 1e400: expected a finite number (this one is too large for "
             "a double)");
+}
+
+TEST(ScenarioErrorsText, NanAndInfinityAreNotJson) {
+  // What Python's json module writes for float("nan") and float("inf"): the
+  // message says JSON has no such number, where it is, and what is allowed.
+  std::string text = scenario_test::example_json().dump();
+  const std::string vertex = "[40,12]";
+  const std::size_t at = text.find(vertex);
+  for (const char* bad : {"NaN", "-Infinity", "Infinity", "nan", "inf"}) {
+    std::string t = text;
+    t.replace(at, vertex.size(), std::string("[40,\n") + bad + "]");
+    const std::string what = message_of([&] { sim::parse_scenario(t, "scn.json"); });
+    EXPECT_EQ(what, std::string("scn.json: bodies[1].polygon[2][1] = ") + bad +
+                        " at line 2, column 1: expected a finite number (JSON has no NaN or "
+                        "Infinity; every number of a scenario must be finite)")
+        << bad;
+  }
+  // A misspelt word that is not a number stays a syntax error.
+  std::string t = text;
+  t.replace(at, vertex.size(), "[40,Nope]");
+  const std::string what = message_of([&] { sim::parse_scenario(t, "scn.json"); });
+  EXPECT_EQ(what.rfind("scn.json: invalid JSON at line 1, column ", 0), 0u) << what;
 }
 
 TEST(ScenarioErrorsText, KeyGivenTwice) {

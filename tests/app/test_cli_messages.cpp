@@ -1,0 +1,144 @@
+// What `landslide` says, read from the real binary in a child process: each
+// message names the value and what is allowed, counts read as words do ("1
+// thread"), and a stage's closing line gives the kinetic energy its rest
+// test compared.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "app/counted.hpp"
+#include "block_scene.hpp"
+#include "render/video.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Result {
+  int status = -1;
+  std::string output;  // stdout and stderr together
+};
+
+// Runs `landslide ARGS` in `dir`.
+Result landslide(const std::string& args, const fs::path& dir) {
+  const std::string command =
+      "cd '" + dir.string() + "' && '" LANDSLIDE_BINARY "' " + args + " 2>&1";
+  Result r;
+  FILE* pipe = ::popen(command.c_str(), "r");
+  if (!pipe) return r;
+  char buffer[4096];
+  for (std::size_t n; (n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0;)
+    r.output.append(buffer, n);
+  const int status = ::pclose(pipe);
+  r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return r;
+}
+
+// One material, one body, one stage (with a rest test), one painted field.
+std::string single_scene() {
+  std::string s = kSlumpingBlock;
+  auto replace = [&](const std::string& from, const std::string& to) {
+    const std::size_t at = s.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    if (at != std::string::npos) s.replace(at, from.size(), to);
+  };
+  replace(R"({"name": "settle", "type": "gravity", "duration": 0.5, "ramp_fraction": 0.5, "damping": 0.01},
+    {"name": "soften", "type": "material-change", "material": "block", "set": {"cohesion": 0}},
+    {"name": "slump", "type": "dynamic", "duration": 1.0})",
+          R"({"name": "slump", "type": "dynamic", "duration": 0.3,
+     "stop_at_rest": {"kinetic_ratio": 1e-9, "min_time": 0.1}})");
+  replace(R"("frame_interval": 0.1)", R"("frame_interval": 0.15)");
+  return s;
+}
+
+class CliMessages : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    root_ = fs::temp_directory_path() / ("landslide-cli-" + std::to_string(::getpid()));
+    fs::remove_all(root_);
+    fs::create_directories(root_);
+    std::ofstream(root_ / "one.json") << single_scene();
+  }
+  void TearDown() override { fs::remove_all(root_); }
+  fs::path root_;
+};
+
+TEST(Counted, OneAndMany) {
+  EXPECT_EQ(app::counted(1, "thread"), "1 thread");
+  EXPECT_EQ(app::counted(0, "thread"), "0 threads");
+  EXPECT_EQ(app::counted(2, "body", "bodies"), "2 bodies");
+  EXPECT_EQ(app::counted(1, "body", "bodies"), "1 body");
+}
+
+TEST_F(CliMessages, CheckpointEveryZeroSaysWhatIsAllowed) {
+  for (const char* command : {"run one.json --out out", "resume out"}) {
+    const Result r = landslide(std::string(command) + " --checkpoint-every 0", root_);
+    EXPECT_EQ(r.status, 2) << command;
+    EXPECT_NE(r.output.find("--checkpoint-every = 0: expected a positive (finite) number of "
+                            "simulated seconds"),
+              std::string::npos)
+        << r.output;
+    // CLI::PositiveNumber printed its range: a number of 309 digits.
+    EXPECT_FALSE(std::regex_search(r.output, std::regex(R"(\d{20})"))) << r.output;
+  }
+  EXPECT_FALSE(fs::exists(root_ / "out"));
+}
+
+TEST_F(CliMessages, ValidateAndGalleryOutsideTheRepositoryPointAtScenarios) {
+  for (const char* command : {"validate --quick", "gallery --out pictures"}) {
+    const Result r = landslide(command, root_);
+    EXPECT_EQ(r.status, 2) << command;
+    EXPECT_NE(r.output.find("scenarios: no such folder"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("--scenarios DIR"), std::string::npos) << r.output;
+  }
+  EXPECT_FALSE(fs::exists(root_ / "pictures"));
+}
+
+TEST_F(CliMessages, CountsInTheSingular) {
+  if (!render::ffmpeg_available(nullptr)) GTEST_SKIP() << "the scene paints; no ffmpeg";
+  const Result check = landslide("check one.json", root_);
+  EXPECT_EQ(check.status, 0) << check.output;
+  EXPECT_NE(check.output.find("(1 material, 1 body, 1 stage)"), std::string::npos)
+      << check.output;
+  const Result run = landslide("run one.json --out out --threads 1", root_);
+  ASSERT_EQ(run.status, 0) << run.output;
+  EXPECT_NE(run.output.find(", 1 thread -> "), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("encoded 1 video in "), std::string::npos) << run.output;
+  EXPECT_EQ(run.output.find(" 1 threads"), std::string::npos) << run.output;
+  EXPECT_EQ(run.output.find(" 1 videos"), std::string::npos) << run.output;
+}
+
+// The closing line of a stage gives the kinetic energy its rest test used
+// (summary.json's moving_kinetic_energy_J_per_m), not the points' own.
+TEST_F(CliMessages, StageLineGivesTheRestTestsKineticEnergy) {
+  if (!render::ffmpeg_available(nullptr)) GTEST_SKIP() << "the scene paints; no ffmpeg";
+  const Result run = landslide("run one.json --out out --threads 1", root_);
+  ASSERT_EQ(run.status, 0) << run.output;
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(
+      run.output, m,
+      std::regex(R"(slump: done at t = \S+ s, \d+ steps, \S+ s wall, moving kinetic energy (\S+) )"
+                 R"(J/m \(at rest once <= 1e-09 x gravity work (\S+) J/m\))")))
+      << run.output;
+  std::ifstream in(root_ / "out" / "summary.json");
+  const nlohmann::json stage = nlohmann::json::parse(in).at("stages").at(0);
+  const double moving = stage.at("moving_kinetic_energy_J_per_m").get<double>();
+  const double points = stage.at("kinetic_energy_J_per_m").get<double>();
+  // The line prints 6 significant digits.
+  EXPECT_NEAR(std::stod(m[1].str()), moving, 1e-5 * moving);
+  EXPECT_GT(std::fabs(points - moving), 1e-3 * moving) << "the two energies must differ for "
+                                                          "this test to tell them apart";
+  EXPECT_GT(std::stod(m[2].str()), 0);
+}
+
+}  // namespace
