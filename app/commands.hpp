@@ -1,6 +1,5 @@
-// The subcommands of `landslide`. Each returns the process exit status:
-// 0 done, 2 bad input (nothing written), 1 the run failed, 130 stopped by
-// Ctrl-C and 143 by SIGTERM, after writing a checkpoint.
+// The subcommands of `landslide`. Each returns the process exit status
+// (output/exit_status.hpp); validate and gallery are declared in their folders.
 #pragma once
 
 #include <optional>
@@ -8,15 +7,11 @@
 #include <utility>
 #include <vector>
 
-namespace app {
+#include "gallery/src/gallery.hpp"
+#include "output/exit_status.hpp"
+#include "validation/validate.hpp"
 
-constexpr int kExitOk = 0;
-constexpr int kExitFailed = 1;
-constexpr int kExitBadInput = 2;
-constexpr int kExitInterrupted = 130;  // 128 + SIGINT, as shells report it
-// 128 + SIGTERM: a job script tells "stopped by its scheduler or `timeout`"
-// from Ctrl-C, and either way the checkpoint is there.
-constexpr int kExitTerminated = 143;
+namespace app {
 
 struct RunOptions {
   std::string scenario;
@@ -27,7 +22,7 @@ struct RunOptions {
   // first stages match a saved one (sim::stage_prefix_key) starts from it.
   std::string state_cache;  // "": no reuse
   // An earlier run's outputs in out_dir are removed first (without it such a
-  // folder is refused: app/output_dir.hpp).
+  // folder is refused: output/output_dir.hpp).
   bool overwrite = false;
   bool allow_long = false;  // run past the estimate's limits (app/estimate.hpp)
 };
@@ -58,7 +53,7 @@ struct RenderOptions {
   std::string out;  // a .png file (one state) or a directory; "" : see README
   bool video = false;  // also encode OUT/<field>.mp4 and .gif
   // Each frame with the run's series plot (RUN/series.csv) beside it, a
-  // marker at the frame's time (app/series_plot.hpp).
+  // marker at the frame's time (output/series_plot.hpp).
   bool series = false;
 };
 int render_command(const RenderOptions& options);
@@ -74,28 +69,5 @@ struct PanelOptions {
   std::vector<std::string> items;  // IMAGE CAPTION IMAGE CAPTION ...
 };
 int panel_command(const PanelOptions& options);
-
-// `landslide gallery`: the paper's figures 5, 6, 9, 10, 11, 12 (PNG), an
-// animation of the phi = 20 slide and one of the four friction angles side by
-// side, regenerated from the committed scenarios.
-struct GalleryOptions {
-  std::string out;        // directory
-  std::string scenarios;  // "" : ./scenarios
-  bool quick = false;     // every run at h = 1.127 m (1648 points)
-};
-int gallery_command(const GalleryOptions& options);
-
-// `landslide validate`: the validation suite (tests/validation/README.md).
-struct ValidateOptions {
-  std::string scenarios;  // "" : ./scenarios
-  bool quick = false;     // coarse resolutions only (the CI version)
-  bool finest = false;    // adds the Bui column at h = 1.25 mm
-};
-int validate_command(const ValidateOptions& options);
-
-// Whether `dir` (of validate or gallery: --scenarios if `given`, else
-// ./scenarios) is a folder; if not, says so on stderr with a hint at
-// --scenarios.
-bool scenarios_folder_found(const std::string& dir, bool given, const std::string& command);
 
 }  // namespace app

@@ -6,9 +6,9 @@
 #include <fstream>
 #include <sstream>
 
-#include "app/frames.hpp"
-#include "sim/seed.hpp"
-#include "sim/step.hpp"
+#include "output/frames.hpp"
+#include "sim/scene/seed.hpp"
+#include "sim/physics/step.hpp"
 
 namespace app {
 

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "sim/simulation.hpp"
+#include "sim/run/simulation.hpp"
 
 namespace app {
 

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "app/commands.hpp"
-#include "app/counted.hpp"
+#include "output/counted.hpp"
 #include "render/error.hpp"
 #include "render/font.hpp"
 #include "render/panel.hpp"

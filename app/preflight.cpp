@@ -3,9 +3,9 @@
 #include <iostream>
 #include <sstream>
 
-#include "app/output_dir.hpp"
-#include "app/state_cache.hpp"
-#include "sim/binary_io.hpp"
+#include "output/output_dir.hpp"
+#include "output/state_cache.hpp"
+#include "sim/io/binary_io.hpp"
 #include "render/error.hpp"
 #include "render/video.hpp"
 

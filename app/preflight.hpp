@@ -8,10 +8,10 @@
 #include <ostream>
 #include <string>
 
-#include "app/checkpoint.hpp"
+#include "output/checkpoint.hpp"
 #include "app/estimate.hpp"
-#include "app/frames.hpp"
-#include "sim/simulation.hpp"
+#include "output/frames.hpp"
+#include "sim/run/simulation.hpp"
 
 namespace app {
 

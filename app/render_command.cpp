@@ -16,16 +16,16 @@
 #include <nlohmann/json.hpp>
 
 #include "app/commands.hpp"
-#include "app/counted.hpp"
-#include "app/frames.hpp"
-#include "app/series_plot.hpp"
+#include "output/counted.hpp"
+#include "output/frames.hpp"
+#include "output/series_plot.hpp"
 #include "render/error.hpp"
 #include "render/font.hpp"
 #include "render/png_io.hpp"
 #include "render/video.hpp"
-#include "sim/scenario.hpp"
-#include "sim/seed.hpp"
-#include "sim/vtk.hpp"
+#include "sim/scene/scenario.hpp"
+#include "sim/scene/seed.hpp"
+#include "sim/io/vtk.hpp"
 
 namespace app {
 

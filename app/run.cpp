@@ -11,18 +11,18 @@
 #include <memory>
 #include <sstream>
 
-#include "app/checkpoint.hpp"
+#include "output/checkpoint.hpp"
 #include "app/commands.hpp"
-#include "app/counted.hpp"
-#include "app/frames.hpp"
-#include "app/output_dir.hpp"
+#include "output/counted.hpp"
+#include "output/frames.hpp"
+#include "output/output_dir.hpp"
 #include "app/preflight.hpp"
-#include "app/run_observer.hpp"
-#include "app/state_cache.hpp"
-#include "sim/binary_io.hpp"
-#include "sim/simulation.hpp"
-#include "sim/vtk.hpp"
-#include "sim/watchdog.hpp"
+#include "output/run_observer.hpp"
+#include "output/state_cache.hpp"
+#include "sim/io/binary_io.hpp"
+#include "sim/run/simulation.hpp"
+#include "sim/io/vtk.hpp"
+#include "sim/run/watchdog.hpp"
 #include "render/video.hpp"
 
 namespace app {

@@ -1,7 +1,7 @@
 // Run time against error: how much accuracy each second of solver time buys.
 //
 // 1. The laterally confined elastic column (scenarios/elastic-column.json)
-//    against its closed form (sim/elastic_column.hpp, method notes section 5),
+//    against its closed form (validation/elastic_column.hpp, method notes section 5),
 //    at 4..32 cells over the height (--full: also 64), 1x1 and 2x2 points per
 //    cell, Courant 0.1, 0.25, 0.5: relative L2 error of sigma_yy.
 // 2. The paper's slope at phi = 20 deg (Andersen & Andersen, Section 7) at the
@@ -31,8 +31,8 @@
 #include "bench/loglog_plot.hpp"
 #include "bench/slope_surface.hpp"
 #include "render/png_io.hpp"
-#include "sim/elastic_column.hpp"
-#include "sim/simulation.hpp"
+#include "validation/elastic_column.hpp"
+#include "sim/run/simulation.hpp"
 
 namespace {
 

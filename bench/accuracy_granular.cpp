@@ -3,8 +3,8 @@
 // on the scene's no-slip base and on a friction base, and the collapse of
 // columns of aspect ratio 0.5, 1 and 2 on the friction base against their finest run, each
 // at several cell sizes and Courant numbers; then the paper's slope with the
-// paper's FLIP update beside APIC (sim/apic.hpp), the candidate cure for the
-// transfer loss. The runout is sim/runout.hpp's.
+// paper's FLIP update beside APIC (sim/physics/apic.hpp), the candidate cure for the
+// transfer loss. The runout is sim/run/runout.hpp's.
 #include "bench/accuracy_granular.hpp"
 
 #include <chrono>
@@ -13,10 +13,10 @@
 #include <string>
 #include <vector>
 
-#include "app/bui_experiment.hpp"
-#include "app/validation_cases.hpp"
-#include "sim/runout.hpp"
-#include "sim/simulation.hpp"
+#include "validation/bui_experiment.hpp"
+#include "validation/validation_cases.hpp"
+#include "sim/run/runout.hpp"
+#include "sim/run/simulation.hpp"
 
 namespace bench {
 
@@ -84,7 +84,7 @@ void granular_studies(const std::string& scenarios, bool full) {
                               ": toe against the experiment's " + std::to_string(toe) + " m";
     print(title.c_str(), "toe [m]", runs);
   }
-  // The collapse columns of validate (app/validation_collapse.cpp) on the
+  // The collapse columns of validate (validation/validation_collapse.cpp) on the
   // friction base; the reference is each one's finest grid at the smaller
   // Courant number.
   for (const double aspect : {0.5, 1.0, 2.0}) {

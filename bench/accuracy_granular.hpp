@@ -10,7 +10,7 @@ namespace bench {
 // (--full adds 1.25 mm) and Courant numbers, with each run's wall time.
 void granular_studies(const std::string& scenarios, bool full);
 
-// The paper's slope with the FLIP update and with APIC (sim/apic.hpp),
+// The paper's slope with the FLIP update and with APIC (sim/physics/apic.hpp),
 // side by side (part of granular_studies).
 void transfer_study(const std::string& scenarios, bool full);
 

@@ -14,7 +14,7 @@
 //       (USF: sigma^{k+1}, V^{k+1}, Eqs. 16, 31), minus the stress work
 //       counted (midpoint stress, start volume), split into points that end
 //       the step disconnected (below their critical density, stress zeroed,
-//       sim/granular.hpp) and the rest.
+//       sim/physics/granular.hpp) and the rest.
 // residual = A + B + Q holds exactly for fixed and roller walls (derivation in
 // tests/validation/README.md); all three are O(dt) per unit time when the
 // motion is smooth. Friction walls add their own terms, not split here.
@@ -27,8 +27,8 @@
 #include <string>
 #include <vector>
 
-#include "sim/diagnostics.hpp"
-#include "sim/simulation.hpp"
+#include "sim/run/diagnostics.hpp"
+#include "sim/run/simulation.hpp"
 
 namespace {
 

@@ -7,8 +7,8 @@
 
 #include <vector>
 
-#include "sim/scenario.hpp"
-#include "sim/world.hpp"
+#include "sim/scene/scenario.hpp"
+#include "sim/physics/world.hpp"
 
 namespace bench {
 

@@ -18,8 +18,8 @@
 #include <string>
 #include <vector>
 
-#include "sim/simulation.hpp"
-#include "sim/watchdog.hpp"
+#include "sim/run/simulation.hpp"
+#include "sim/run/watchdog.hpp"
 
 namespace {
 

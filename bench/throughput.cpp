@@ -26,7 +26,7 @@
 #include <string>
 #include <vector>
 
-#include "sim/simulation.hpp"
+#include "sim/run/simulation.hpp"
 
 namespace {
 
@@ -71,7 +71,7 @@ sim::Scenario granular_column() {
 }
 
 // The same column on a Coulomb friction base, mu = 0.5: what a friction wall
-// costs (sim/wall_friction.hpp).
+// costs (sim/physics/wall_friction.hpp).
 sim::Scenario friction_column() {
   sim::Scenario s = granular_column();
   s.name = "friction-column";
@@ -85,7 +85,7 @@ double bytes(const std::vector<T>& v) {
 }
 
 // Bytes held by every std::vector in the world (keep in step with
-// sim/world.hpp, sim/particles.hpp and sim/grid.hpp); the grid's in `grid`.
+// sim/physics/world.hpp, sim/physics/particles.hpp and sim/physics/grid.hpp); the grid's in `grid`.
 double vector_bytes(const sim::World& w, double* grid) {
   const sim::Particles& p = w.points;
   double points = bytes(p.material) + bytes(p.yielded);

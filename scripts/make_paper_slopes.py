@@ -29,7 +29,7 @@ RESOLUTIONS = {1648: 1.127, 8370: 0.5, 28724: 0.270, 67016: 0.177}
 PHI_BEFORE_TRIGGER = 25
 
 # Below this density the soil is disconnected and carries no stress
-# (Dunatunga & Kamrin 2015, sim/granular.hpp): a reconstruction, the density
+# (Dunatunga & Kamrin 2015, sim/physics/granular.hpp): a reconstruction, the density
 # as placed (scenarios/README.md says why).
 CRITICAL_DENSITY = 2000
 

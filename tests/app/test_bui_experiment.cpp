@@ -1,5 +1,5 @@
 // The Bui et al. (2008) comparison of `landslide validate`
-// (app/bui_experiment.hpp): the committed experiment curves read back as
+// (validation/bui_experiment.hpp): the committed experiment curves read back as
 // their source gives them, a broken curve file is refused with a message
 // naming file, line, value and what is allowed, and each measure returns the
 // known answer on a made-up state whose answer is known by construction.
@@ -10,8 +10,8 @@
 #include <fstream>
 #include <string>
 
-#include "app/bui_experiment.hpp"
-#include "sim/scenario.hpp"
+#include "validation/bui_experiment.hpp"
+#include "sim/scene/scenario.hpp"
 
 namespace {
 

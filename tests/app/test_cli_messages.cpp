@@ -16,7 +16,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "app/counted.hpp"
+#include "output/counted.hpp"
 #include "block_scene.hpp"
 #include "render/video.hpp"
 

@@ -3,9 +3,9 @@
 
 #include <cmath>
 
-#include "app/frames.hpp"
-#include "sim/material.hpp"
-#include "sim/mohr_coulomb.hpp"
+#include "output/frames.hpp"
+#include "sim/physics/material.hpp"
+#include "sim/physics/mohr_coulomb.hpp"
 
 namespace {
 

@@ -14,10 +14,10 @@
 #include <nlohmann/json.hpp>
 
 #include "app/commands.hpp"
-#include "app/frames.hpp"
+#include "output/frames.hpp"
 #include "tests/app/tiny_block.hpp"
 #include "render/png_io.hpp"
-#include "sim/simulation.hpp"
+#include "sim/run/simulation.hpp"
 
 namespace {
 

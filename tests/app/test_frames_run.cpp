@@ -16,7 +16,7 @@
 
 #include "app/commands.hpp"
 #include "tests/app/tiny_block.hpp"
-#include "app/frames.hpp"
+#include "output/frames.hpp"
 #include "render/image_diff.hpp"
 #include "render/png_io.hpp"
 #include "render/video.hpp"

@@ -16,7 +16,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/commands.hpp"
-#include "app/frames.hpp"
+#include "output/frames.hpp"
 #include "render/png_io.hpp"
 #include "render/subprocess.hpp"
 #include "render/video.hpp"

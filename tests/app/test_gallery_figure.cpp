@@ -1,4 +1,4 @@
-// The gallery's journal layout (app/gallery_figure.hpp) on made-up frames:
+// The gallery's journal layout (gallery/src/gallery_figure.hpp) on made-up frames:
 // every text on a page has digits at least 1.2 % of the page's width, for
 // one panel and for four.
 #include <gtest/gtest.h>
@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
-#include "app/gallery_figure.hpp"
+#include "gallery/src/gallery_figure.hpp"
 #include "render/panel.hpp"
-#include "sim/scenario.hpp"
+#include "sim/scene/scenario.hpp"
 
 namespace {
 

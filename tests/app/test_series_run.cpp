@@ -1,4 +1,4 @@
-// The time series of a run (app/series.hpp): OUT/series.csv and
+// The time series of a run (output/series.hpp): OUT/series.csv and
 // OUT/series.png from a short run of a tiny scene, their agreement with
 // summary.json, `landslide render --series`, and how bad series files are
 // refused; a series resumed within a stage goes on as if never stopped
@@ -15,14 +15,14 @@
 #include <nlohmann/json.hpp>
 
 #include "app/commands.hpp"
-#include "app/series.hpp"
-#include "app/series_plot.hpp"
-#include "app/summary.hpp"
+#include "output/series.hpp"
+#include "output/series_plot.hpp"
+#include "output/summary.hpp"
 #include "block_scene.hpp"
 #include "render/png_io.hpp"
 #include "render/video.hpp"
-#include "sim/scenario.hpp"
-#include "sim/simulation.hpp"
+#include "sim/scene/scenario.hpp"
+#include "sim/run/simulation.hpp"
 
 namespace {
 

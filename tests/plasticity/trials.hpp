@@ -12,7 +12,7 @@
 #include <random>
 #include <vector>
 
-#include "sim/mohr_coulomb.hpp"
+#include "sim/physics/mohr_coulomb.hpp"
 
 namespace plasticity_test {
 

@@ -6,9 +6,9 @@
 #include <map>
 #include <memory>
 
-#include "app/frames.hpp"
-#include "app/summary.hpp"
-#include "sim/simulation.hpp"
+#include "output/frames.hpp"
+#include "output/summary.hpp"
+#include "sim/run/simulation.hpp"
 
 namespace regression {
 

@@ -6,7 +6,7 @@
 #include <sstream>
 #include <string>
 
-#include "sim/scenario.hpp"
+#include "sim/scene/scenario.hpp"
 
 namespace {
 

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "sim/scenario.hpp"
+#include "sim/scene/scenario.hpp"
 #include "tests/scenario/example.hpp"
 
 namespace {

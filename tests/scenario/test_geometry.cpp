@@ -7,7 +7,7 @@
 #include <optional>
 #include <vector>
 
-#include "sim/scenario_geometry.hpp"
+#include "sim/scene/scenario_geometry.hpp"
 
 namespace {
 

@@ -3,8 +3,8 @@
 
 #include <cstdint>
 
-#include "sim/particles.hpp"
-#include "sim/scenario.hpp"
+#include "sim/physics/particles.hpp"
+#include "sim/scene/scenario.hpp"
 
 namespace simtest {
 

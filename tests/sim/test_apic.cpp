@@ -1,4 +1,4 @@
-// The affine particle-in-cell transfer (sim/apic.hpp): an affine velocity
+// The affine particle-in-cell transfer (sim/physics/apic.hpp): an affine velocity
 // field goes to the grid and back exactly with GIMP weights, the energy
 // balance of Eq. (3) closes with its measured transfer loss, and a stopped
 // run resumes bit-identically (the affine fields are part of the state).
@@ -7,8 +7,8 @@
 #include <cmath>
 #include <cstring>
 
-#include "sim/seed.hpp"
-#include "sim/simulation.hpp"
+#include "sim/scene/seed.hpp"
+#include "sim/run/simulation.hpp"
 #include "support.hpp"
 
 namespace {

@@ -7,7 +7,7 @@
 #include <cstdio>
 #include <cstring>
 
-#include "sim/simulation.hpp"
+#include "sim/run/simulation.hpp"
 #include "support.hpp"
 
 namespace {

@@ -1,5 +1,5 @@
 // The laterally confined elastic column under incrementally applied gravity
-// against its closed form (sim/elastic_column.hpp, method notes section 5),
+// against its closed form (validation/elastic_column.hpp, method notes section 5),
 // at 4, 8, 16 and 32 cells over its height.
 //
 // With 2x2 points per cell (the paper's layout) both points of a cell row get
@@ -19,8 +19,8 @@
 #include <cstdio>
 #include <vector>
 
-#include "sim/elastic_column.hpp"
-#include "sim/simulation.hpp"
+#include "validation/elastic_column.hpp"
+#include "sim/run/simulation.hpp"
 
 namespace {
 

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <random>
 
-#include "sim/gimp.hpp"
+#include "sim/physics/gimp.hpp"
 
 namespace {
 

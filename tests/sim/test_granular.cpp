@@ -1,12 +1,12 @@
-// The disconnected state of Dunatunga & Kamrin (2015), sim/granular.hpp: a
+// The disconnected state of Dunatunga & Kamrin (2015), sim/physics/granular.hpp: a
 // Mohr-Coulomb block pulled apart below its critical density carries no
 // stress; pushed back together past it, it carries stress again.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "sim/seed.hpp"
-#include "sim/step.hpp"
+#include "sim/scene/seed.hpp"
+#include "sim/physics/step.hpp"
 #include "support.hpp"
 
 namespace {

@@ -4,9 +4,9 @@
 
 #include <cmath>
 
-#include "sim/constitutive.hpp"
-#include "sim/seed.hpp"
-#include "sim/step.hpp"
+#include "sim/physics/constitutive.hpp"
+#include "sim/scene/seed.hpp"
+#include "sim/physics/step.hpp"
 #include "support.hpp"
 
 namespace {

@@ -8,8 +8,8 @@
 #include <cstdio>
 #include <string>
 
-#include "sim/mohr_coulomb.hpp"
-#include "sim/simulation.hpp"
+#include "sim/physics/mohr_coulomb.hpp"
+#include "sim/run/simulation.hpp"
 
 namespace {
 

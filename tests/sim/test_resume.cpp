@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "sim/binary_io.hpp"
-#include "sim/simulation.hpp"
+#include "sim/io/binary_io.hpp"
+#include "sim/run/simulation.hpp"
 #include "support.hpp"
 
 namespace {

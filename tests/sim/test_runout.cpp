@@ -1,12 +1,12 @@
-// The one definition of the runout (sim/runout.hpp) on blocks of soil points
+// The one definition of the runout (sim/run/runout.hpp) on blocks of soil points
 // moved by hand: the toe follows the material, a detached clod or a film
 // thinner than 1.5 % of the initial height does not carry it on.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "sim/runout.hpp"
-#include "sim/seed.hpp"
+#include "sim/run/runout.hpp"
+#include "sim/scene/seed.hpp"
 #include "support.hpp"
 
 namespace {

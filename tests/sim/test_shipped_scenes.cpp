@@ -9,7 +9,7 @@
 #include <cstdio>
 #include <string>
 
-#include "sim/simulation.hpp"
+#include "sim/run/simulation.hpp"
 
 namespace {
 

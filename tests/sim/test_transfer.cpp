@@ -4,8 +4,8 @@
 #include <cmath>
 #include <random>
 
-#include "sim/seed.hpp"
-#include "sim/step.hpp"
+#include "sim/scene/seed.hpp"
+#include "sim/physics/step.hpp"
 #include "support.hpp"
 
 namespace {

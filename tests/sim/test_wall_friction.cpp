@@ -1,4 +1,4 @@
-// Coulomb friction walls (sim/wall_friction.hpp) against the block on an
+// Coulomb friction walls (sim/physics/wall_friction.hpp) against the block on an
 // inclined plane: gravity tilted by an angle t to a friction floor with
 // coefficient mu. A rigid block slides with a = g (sin t - mu cos t) when
 // tan t > mu and stays put when tan t <= mu; friction then does
@@ -8,7 +8,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "sim/simulation.hpp"
+#include "sim/run/simulation.hpp"
 #include "support.hpp"
 
 namespace {
@@ -104,7 +104,7 @@ TEST(WallFriction, BlockSlidesAtGTimesSinMinusMuCos) {
     EXPECT_NEAR(a, exact, 0.005 * exact) << "t = " << c.t_deg << " deg, mu = " << c.mu;
     // What the floor takes is mu N d: friction's own term, the impacts of
     // the noisy normal velocity and the transfer of the walls' change
-    // (sim/wall_friction.hpp); friction alone is 83 to 100 % of it.
+    // (sim/physics/wall_friction.hpp); friction alone is 83 to 100 % of it.
     const double taken = e.friction_work + e.wall_loss + e.transfer_loss;
     EXPECT_NEAR(taken, expected_friction, 0.1 * expected_friction + 1e-3);
     EXPECT_GE(e.friction_work, 0.8 * expected_friction);

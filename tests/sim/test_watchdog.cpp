@@ -9,8 +9,8 @@
 #include <limits>
 #include <string>
 
-#include "sim/simulation.hpp"
-#include "sim/watchdog.hpp"
+#include "sim/run/simulation.hpp"
+#include "sim/run/watchdog.hpp"
 #include "support.hpp"
 
 namespace {

@@ -1,0 +1,59 @@
+#include "output/frame_file.hpp"
+
+#include "output/checksum.hpp"
+#include "sim/io/binary_io.hpp"
+
+namespace app {
+
+namespace {
+
+// "LSFRAME" and a format version (2: with the material ids, 3: a CRC-32
+// after the content).
+constexpr std::uint64_t kMagic = 0x4c534652414d4503ULL;
+constexpr std::uint64_t kMaxFields = 64;
+
+}  // namespace
+
+void write_frame_file(const std::filesystem::path& file, const Frame& f) {
+  sim::BinaryWriter w;
+  w.put(kMagic);
+  w.put(f.number);
+  w.put(f.time);
+  w.put_string(f.stage);
+  w.put_vector(f.x);
+  w.put_vector(f.y);
+  w.put_vector(f.half);
+  w.put(std::uint64_t(f.values.size()));
+  for (const std::vector<float>& v : f.values) w.put_vector(v);
+  w.put_vector(f.material);
+  append_checksum(w);
+  write_bytes_atomically(file, w);
+}
+
+Frame read_frame_file(const std::filesystem::path& file) {
+  std::string bytes =
+      read_file_bytes(file, file.string() + ": cannot read the captured frame");
+  sim::BinaryReader r(bytes, file.string());
+  if (bytes.size() < 8 || r.get<std::uint64_t>() != kMagic)
+    r.fail("not a frame captured by this version of landslide");
+  strip_checksum(bytes, file);  // r reads `bytes` by reference: the checksum is gone for it too
+  Frame f;
+  f.number = r.get<int>();
+  f.time = r.get<double>();
+  f.stage = r.get_string();
+  f.x = r.get_vector<float>();
+  f.y = r.get_vector<float>(f.x.size(), "a frame's y");
+  f.half = r.get_vector<float>(f.x.size(), "a frame's sizes");
+  const auto fields = r.get<std::uint64_t>();
+  if (fields > kMaxFields) r.fail("a frame with " + std::to_string(fields) + " fields");
+  for (std::uint64_t k = 0; k < fields; ++k)
+    f.values.push_back(r.get_vector<float>(f.x.size(), "a frame's values"));
+  f.material = r.get_vector<std::uint8_t>();
+  if (!f.material.empty() && f.material.size() != f.x.size())
+    r.fail("a frame with " + std::to_string(f.material.size()) + " material ids for " +
+           std::to_string(f.x.size()) + " points");
+  if (!r.at_end()) r.fail("bytes after the end of the frame");
+  return f;
+}
+
+}  // namespace app

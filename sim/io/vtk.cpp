@@ -1,0 +1,137 @@
+#include "sim/io/vtk.hpp"
+
+#include <cctype>
+#include <cstdlib>
+#include <fstream>
+#include <functional>
+#include <sstream>
+#include <stdexcept>
+
+#include "sim/io/atomic_file.hpp"
+
+namespace sim {
+
+namespace {
+
+// One <DataArray> of n tuples; value(p, c) gives component c of point p.
+void data_array(std::ostream& out, const char* type, const char* name, int components,
+                std::size_t n, const std::function<double(std::size_t, int)>& value) {
+  out << "<DataArray type=\"" << type << "\" Name=\"" << name << "\" NumberOfComponents=\""
+      << components << "\" format=\"ascii\">\n";
+  for (std::size_t p = 0; p < n; ++p) {
+    for (int c = 0; c < components; ++c) out << value(p, c) << (c + 1 < components ? ' ' : '\n');
+  }
+  out << "</DataArray>\n";
+}
+
+}  // namespace
+
+void write_vtu(const std::string& path, const World& w, double time) {
+  const Particles& p = w.points;
+  const std::size_t n = p.size();
+  write_file_atomically(path, [&](std::ostream& out) {
+    out.precision(17);
+    out << "<?xml version=\"1.0\"?>\n"
+           "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
+           "<UnstructuredGrid>\n<FieldData>\n"
+           "<DataArray type=\"Float64\" Name=\"TimeValue\" NumberOfTuples=\"1\" format=\"ascii\">"
+        << time << "</DataArray>\n</FieldData>\n"
+        << "<Piece NumberOfPoints=\"" << n << "\" NumberOfCells=\"" << n << "\">\n<Points>\n";
+    data_array(out, "Float64", "Points", 3, n,
+               [&](std::size_t i, int c) { return c == 0 ? p.x[i] : c == 1 ? p.y[i] : 0.0; });
+    out << "</Points>\n<Cells>\n";
+    data_array(out, "Int64", "connectivity", 1, n, [](std::size_t i, int) { return double(i); });
+    data_array(out, "Int64", "offsets", 1, n, [](std::size_t i, int) { return double(i + 1); });
+    data_array(out, "UInt8", "types", 1, n, [](std::size_t, int) { return 1.0; });  // VTK_VERTEX
+    out << "</Cells>\n<PointData>\n";
+    data_array(out, "Float64", "displacement", 3, n, [&](std::size_t i, int c) {
+      return c == 0 ? p.x[i] - p.x0[i] : c == 1 ? p.y[i] - p.y0[i] : 0.0;
+    });
+    data_array(out, "Float64", "velocity", 3, n,
+               [&](std::size_t i, int c) { return c == 0 ? p.vx[i] : c == 1 ? p.vy[i] : 0.0; });
+    data_array(out, "Float64", "stress", 4, n, [&](std::size_t i, int c) {
+      return c == 0 ? p.sxx[i] : c == 1 ? p.syy[i] : c == 2 ? p.sxy[i] : p.szz[i];
+    });
+    data_array(out, "Float64", "density", 1, n, [&](std::size_t i, int) { return p.density[i]; });
+    data_array(out, "Float64", "volume", 1, n,
+               [&](std::size_t i, int) { return p.volume(i); });
+    data_array(out, "Int32", "material", 1, n, [&](std::size_t i, int) { return p.material[i]; });
+    data_array(out, "UInt8", "yielded", 1, n, [&](std::size_t i, int) { return p.yielded[i]; });
+    out << "</PointData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
+  });
+}
+
+void write_pvd(const std::string& path, const std::vector<std::pair<double, std::string>>& files) {
+  write_file_atomically(path, [&](std::ostream& out) {
+    out.precision(17);
+    out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n<Collection>\n";
+    for (const auto& [t, file] : files)
+      out << "<DataSet timestep=\"" << t << "\" part=\"0\" file=\"" << file << "\"/>\n";
+    out << "</Collection>\n</VTKFile>\n";
+  });
+}
+
+namespace {
+
+// The numbers of the DataArray named `name`; expects `count` of them.
+std::vector<double> read_array(const std::string& text, const std::string& file,
+                               const std::string& name, std::size_t count) {
+  const std::size_t at = text.find("Name=\"" + name + "\"");
+  if (at == std::string::npos) throw std::runtime_error(file + ": no DataArray '" + name + "'");
+  const std::size_t begin = text.find('>', at);
+  const std::size_t end = text.find("</DataArray>", at);
+  if (begin == std::string::npos || end == std::string::npos || end < begin)
+    throw std::runtime_error(file + ": DataArray '" + name + "' is not closed");
+  std::vector<double> values;
+  values.reserve(count);
+  const char* c = text.c_str() + begin + 1;
+  const char* stop = text.c_str() + end;
+  while (c < stop) {
+    char* next = nullptr;
+    const double v = std::strtod(c, &next);
+    if (next == c) {
+      if (std::isspace(static_cast<unsigned char>(*c))) { ++c; continue; }
+      throw std::runtime_error(file + ": DataArray '" + name + "' holds a non-number");
+    }
+    values.push_back(v);
+    c = next;
+  }
+  if (values.size() != count)
+    throw std::runtime_error(file + ": DataArray '" + name + "' has " +
+                             std::to_string(values.size()) + " values, expected " +
+                             std::to_string(count));
+  return values;
+}
+
+}  // namespace
+
+PointState read_vtu(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error(path + ": cannot read");
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  const std::string text = buffer.str();
+  const std::size_t at = text.find("NumberOfPoints=\"");
+  if (at == std::string::npos) throw std::runtime_error(path + ": not a .vtu point file");
+  const std::size_t n = std::strtoull(text.c_str() + at + 16, nullptr, 10);
+  PointState s;
+  s.time = read_array(text, path, "TimeValue", 1)[0];
+  auto split = [&](const std::string& name, int comps, std::vector<std::vector<double>*> out) {
+    const std::vector<double> v = read_array(text, path, name, n * comps);
+    for (std::size_t k = 0; k < out.size(); ++k) {
+      out[k]->resize(n);
+      for (std::size_t i = 0; i < n; ++i) (*out[k])[i] = v[i * comps + k];
+    }
+  };
+  split("Points", 3, {&s.x, &s.y});
+  split("displacement", 3, {&s.ux, &s.uy});
+  split("velocity", 3, {&s.vx, &s.vy});
+  split("stress", 4, {&s.sxx, &s.syy, &s.sxy, &s.szz});
+  split("density", 1, {&s.density});
+  split("volume", 1, {&s.volume});
+  for (const double v : read_array(text, path, "material", n)) s.material.push_back(int(v));
+  for (const double v : read_array(text, path, "yielded", n)) s.yielded.push_back(int(v));
+  return s;
+}
+
+}  // namespace sim

@@ -1,0 +1,128 @@
+// Who does what inside the step's one parallel region.
+//
+// The points are sorted into bands of kBandRows base-node rows (see
+// locate.cpp). Each thread owns a contiguous run of bands, chosen so the
+// threads hold about equal numbers of points (partition_bands), and every
+// phase of the step hands a thread the same points and the same node rows. What a
+// thread writes in one phase it reads in the next from its own cache: with
+// phases that handed points out in other ways (chunks of the point index,
+// bands on demand) the two cores of this machine spent their time passing
+// cache lines back and forth, and 2 threads ran 1.2 to 1.5 times as fast as
+// one instead of 1.8 to 1.9 times (bench/README.md).
+//
+// Results never depend on the partition: a node's sums are taken band by
+// band in a fixed order (even bands, then odd), and every reduction is summed
+// per band and then over the bands in order.
+#pragma once
+
+#include <omp.h>
+
+#include <algorithm>
+
+#include "sim/physics/world.hpp"
+
+namespace sim {
+
+struct BandRange {
+  int begin = 0, end = 0;  // bands [begin, end)
+};
+
+// The bands of the calling thread. Outside a parallel region (tests calling
+// one phase) the one thread owns them all.
+inline BandRange own_bands(const World& w) {
+  const int bands = static_cast<int>(w.band_start.size()) - 1;
+  const int threads = omp_get_num_threads();
+  if (threads == 1) return {0, bands};
+  const int t = omp_get_thread_num();
+  return {w.thread_bands[t], w.thread_bands[t + 1]};
+}
+
+// Points in bands [first, end) of one parity.
+inline long parity_points(const World& w, int first, int end, int parity) {
+  long n = 0;
+  for (int b = first + ((first & 1) != parity); b < end; b += 2)
+    n += w.band_start[b + 1] - w.band_start[b];
+  return n;
+}
+
+// The time of a scatter phase, in points: each parity takes as long as its
+// busiest thread (the threads meet at a barrier after each).
+inline long scatter_cost(const World& w) {
+  long cost = 0;
+  for (int parity = 0; parity < 2; ++parity) {
+    long busiest = 0;
+    for (std::size_t t = 0; t + 1 < w.thread_bands.size(); ++t)
+      busiest = std::max(busiest, parity_points(w, w.thread_bands[t], w.thread_bands[t + 1], parity));
+    cost += busiest;
+  }
+  return cost;
+}
+
+// Splits the bands among `threads` threads: first about equal points each,
+// then each boundary moves by a band or two while that shortens the scatter
+// phases (scatter_cost). Equal totals can hide a thread with most of its
+// points in even bands: it works on while the other waits at the barrier.
+inline void partition_bands(World& w, int threads) {
+  const int bands = static_cast<int>(w.band_start.size()) - 1;
+  const long points = w.band_start[bands];
+  w.thread_bands.assign(static_cast<std::size_t>(threads) + 1, bands);
+  w.thread_bands[0] = 0;
+  int b = 0;
+  for (int t = 1; t < threads; ++t) {
+    while (b < bands && static_cast<long>(w.band_start[b]) * threads < points * t) ++b;
+    w.thread_bands[t] = b;
+  }
+  long cost = scatter_cost(w);
+  for (bool better = true; better;) {
+    better = false;
+    for (int t = 1; t < threads; ++t) {
+      for (const int move : {-2, -1, 1, 2}) {
+        const int was = w.thread_bands[t], to = was + move;
+        if (to < w.thread_bands[t - 1] || to > w.thread_bands[t + 1]) continue;
+        w.thread_bands[t] = to;
+        const long c = scatter_cost(w);
+        if (c < cost) {
+          cost = c;
+          better = true;
+        } else {
+          w.thread_bands[t] = was;
+        }
+      }
+    }
+  }
+}
+
+// The node rows [first, last) the calling thread resets and updates: band b
+// owns rows j_begin + [b, b + 1) kBandRows of the window (the last band the
+// rest of it).
+inline void own_rows(const World& w, int& first, int& last) {
+  const BandRange r = own_bands(w);
+  const Grid& g = w.grid;
+  last = std::min(g.j_begin + r.end * kBandRows, g.j_end);
+  first = std::min(g.j_begin + r.begin * kBandRows, last);
+}
+
+// Runs visit(band) for each of the calling thread's bands, in order; the
+// band's points are order[band_start[band] .. band_start[band + 1]). For
+// phases that write only their own points: no barrier.
+template <class Visit>
+void for_own_bands(const World& w, Visit visit) {
+  const BandRange r = own_bands(w);
+  for (int b = r.begin; b < r.end; ++b) visit(b);
+}
+
+// As for_own_bands, for visits that add to grid nodes: even bands first,
+// then (after a barrier) odd bands. Two bands of one parity are a band apart
+// and a stencil spans three node rows, so no two threads add to one node at
+// once, and each node receives its sums in the same order whatever the
+// number of threads. Ends with a barrier.
+template <class Visit>
+void scatter_own_bands(const World& w, Visit visit) {
+  const BandRange r = own_bands(w);
+  for (int parity = 0; parity < 2; ++parity) {
+    for (int b = r.begin + ((r.begin & 1) != parity); b < r.end; b += 2) visit(b);
+#pragma omp barrier
+  }
+}
+
+}  // namespace sim

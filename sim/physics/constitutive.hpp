@@ -1,0 +1,34 @@
+// The stress update of one point, split in the steps the paper names:
+// Jaumann rotation (Eq. 24), elastic predictor (Eq. 21) and, for soil, the
+// Mohr-Coulomb return (Eqs. 20-23, Clausen et al.).
+#pragma once
+
+#include "sim/physics/material.hpp"
+#include "sim/physics/stress.hpp"
+
+namespace sim {
+
+// Objective stress rate: the stress rotates with the material spin,
+// sigma += Omega sigma - sigma Omega, Omega = W dt with W_xy = spin / dt.
+// The paper calls its rate the Jaumann rate (Eq. 24); the spin terms are what
+// make it objective, so a rigidly spinning body keeps its principal stresses.
+// `spin` is W_xy dt = (dvx/dy - dvy/dx) dt / 2. sigma_zz does not rotate.
+inline void jaumann_rotate(Stress& s, double spin) {
+  const double dxy = spin * (s.yy - s.xx);
+  const double dn = 2.0 * spin * s.xy;
+  s.xx += dn;
+  s.yy -= dn;
+  s.xy += dxy;
+}
+
+// Hooke's law in plane strain on a strain increment (Eq. 21 without the
+// plastic part): d sigma = lambda tr(d eps) I + 2 G d eps, d eps_zz = 0.
+inline void elastic_predictor(Stress& s, const StrainIncrement& de, const MaterialConstants& m) {
+  const double volumetric = m.lambda * (de.xx + de.yy);
+  s.xx += volumetric + 2.0 * m.shear * de.xx;
+  s.yy += volumetric + 2.0 * m.shear * de.yy;
+  s.xy += 2.0 * m.shear * de.xy;
+  s.zz += volumetric;
+}
+
+}  // namespace sim

@@ -1,0 +1,205 @@
+// The first phase of the step: every point's GIMP stencil (Eqs. 12, 13), the
+// window of nodes the points touch, and the points sorted into bands
+// (sim/physics/bands.hpp). Run by every thread of the step's team, or by one thread
+// outside it (tests).
+#include <omp.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "sim/physics/bands.hpp"
+#include "sim/physics/step.hpp"
+
+namespace sim {
+
+namespace {
+
+// Window partials per thread: i_lo, i_hi, j_lo, j_hi, first point off the grid.
+constexpr int kWindowInts = 5;
+
+}  // namespace
+
+// Names the first point off the grid, its material, where it is and the grid.
+void throw_point_left_grid(const World& w) {
+  const int p = w.bad_point;
+  std::ostringstream msg;
+  msg.precision(6);
+  msg << "point " << p << " (material '" << w.material_specs[w.points.material[p]].name
+      << "') at (" << w.points.x[p] << ", " << w.points.y[p] << ") m ";
+  if (!std::isfinite(w.points.x[p]) || !std::isfinite(w.points.y[p]))
+    msg << "has a non-finite position";
+  else
+    msg << "left the grid [" << w.grid.origin_x << ", "
+        << w.grid.origin_x + (w.grid.nx - 1) * w.grid.h << "] x [" << w.grid.origin_y << ", "
+        << w.grid.origin_y + (w.grid.ny - 1) * w.grid.h << "]";
+  throw SimulationError(msg.str());
+}
+
+namespace {
+
+// Stencils of the points of Lane8 blocks [first_block, end_block), eight
+// points at a time (gimp.hpp; the last block repeats its last point where the
+// points run out). Writes the thread's window partials to `window`.
+void compute_stencils(World& w, int first_block, int end_block, int* window) {
+  const Particles& pts = w.points;
+  const Grid& g = w.grid;
+  const int n = static_cast<int>(pts.size());
+  int i_lo = g.nx, i_hi = -1, j_lo = g.ny, j_hi = -1, bad = n;
+  for (int blk = first_block; blk < end_block; ++blk) {
+    const int first = 8 * blk, count = std::min(8, n - first);
+    Lane8 x, y;
+    for (int l = 0; l < 8; ++l) {
+      x[l] = pts.x[first + std::min(l, count - 1)];
+      y[l] = pts.y[first + std::min(l, count - 1)];
+    }
+    Int8 base_i, base_j;
+    Lane8 wx[3], dx[3], wy[3], dy[3];
+    gimp_axis(x, g.origin_x, w.gimp, base_i, wx, dx);
+    gimp_axis(y, g.origin_y, w.gimp, base_j, wy, dy);
+    for (int l = 0; l < count; ++l) {
+      Stencil& st = w.stencils[first + l];
+      st.base_i = static_cast<int>(base_i[l]);
+      st.base_j = static_cast<int>(base_j[l]);
+      st.wx = Lane4{wx[0][l], wx[1][l], wx[2][l], 0.0};
+      st.dx = Lane4{dx[0][l], dx[1][l], dx[2][l], 0.0};
+      for (int a = 0; a < 3; ++a) {
+        st.wy[a] = wy[a][l];
+        st.dy[a] = dy[a][l];
+      }
+      const bool inside = std::isfinite(x[l]) && std::isfinite(y[l]) && st.base_i >= 0 &&
+                          st.base_j >= 0 && st.base_i + 2 < g.nx && st.base_j + 2 < g.ny;
+      if (!inside) {
+        bad = std::min(bad, first + l);
+        continue;
+      }
+      i_lo = std::min(i_lo, st.base_i);
+      i_hi = std::max(i_hi, st.base_i);
+      j_lo = std::min(j_lo, st.base_j);
+      j_hi = std::max(j_hi, st.base_j);
+    }
+  }
+  const int partial[kWindowInts] = {i_lo, i_hi, j_lo, j_hi, bad};
+  std::copy(partial, partial + kWindowInts, window);
+}
+
+// The window of nodes the points touch, from the threads' partials (min and
+// max: the same whatever the number of threads). The bins of the sort are
+// the window's base nodes, row-major as the grid, so a scene pays for the
+// nodes near its material, not for the whole mesh.
+void set_window(World& w, int threads) {
+  Grid& g = w.grid;
+  const int n = static_cast<int>(w.points.size());
+  int i_lo = g.nx, i_hi = -1, j_lo = g.ny, j_hi = -1;
+  w.bad_point = n;
+  for (int t = 0; t < threads; ++t) {
+    const int* p = &w.thread_window[static_cast<std::size_t>(t) * kWindowInts];
+    i_lo = std::min(i_lo, p[0]);
+    i_hi = std::max(i_hi, p[1]);
+    j_lo = std::min(j_lo, p[2]);
+    j_hi = std::max(j_hi, p[3]);
+    w.bad_point = std::min(w.bad_point, p[4]);
+  }
+  if (n == 0) i_lo = i_hi = j_lo = j_hi = 0;
+  g.i_begin = i_lo;
+  g.i_end = i_hi + 3;
+  g.j_begin = j_lo;
+  g.j_end = j_hi + 3;
+  w.bins = (g.i_end - 2 - g.i_begin) * (g.j_end - 2 - g.j_begin);
+  w.thread_counts.resize(static_cast<std::size_t>(threads) * w.bins);
+  w.order.resize(n);
+  const int bands = (g.j_end - g.j_begin + kBandRows - 1) / kBandRows;
+  w.band_start.resize(static_cast<std::size_t>(bands) + 1);
+}
+
+// Exclusive prefix of the counts, bin by bin and within a bin thread by
+// thread: thread t's points of bin k go after those of threads < t, and each
+// thread takes its points in index order, so the sort is stable by point
+// index, the same order whatever the number of threads. Each thread does the
+// prefix over its own run of bins, from the totals of the runs before it, and
+// notes where each band starts: band b starts at the first point whose base
+// node is in its rows.
+void prefix_own_bins(World& w, int t, int threads) {
+  const int width = w.grid.i_end - 2 - w.grid.i_begin;
+  const int first = static_cast<int>(static_cast<long>(w.bins) * t / threads);
+  const int end = static_cast<int>(static_cast<long>(w.bins) * (t + 1) / threads);
+  int total = 0;
+  for (int k = first; k < end; ++k)
+    for (int u = 0; u < threads; ++u) total += w.thread_counts[static_cast<std::size_t>(u) * w.bins + k];
+  w.thread_totals[t] = total;
+#pragma omp barrier
+  int running = 0;
+  for (int u = 0; u < t; ++u) running += w.thread_totals[u];
+  for (int k = first; k < end; ++k) {
+    if (k % width == 0 && (k / width) % kBandRows == 0) w.band_start[k / width / kBandRows] = running;
+    for (int u = 0; u < threads; ++u) {
+      int& c = w.thread_counts[static_cast<std::size_t>(u) * w.bins + k];
+      const int here = c;
+      c = running;
+      running += here;
+    }
+  }
+}
+
+// After the prefix: the bands past the last base row start (and end) at the
+// last point; the threads' bands and the step's partial sums.
+void finish_bands(World& w, int threads) {
+  const Grid& g = w.grid;
+  const int width = g.i_end - 2 - g.i_begin;
+  const int bands = static_cast<int>(w.band_start.size()) - 1;
+  const int filled = (w.bins / width + kBandRows - 1) / kBandRows;
+  for (int b = filled; b <= bands; ++b) w.band_start[b] = static_cast<int>(w.points.size());
+  partition_bands(w, threads);
+  w.band_sums.assign(static_cast<std::size_t>(bands) * kBandSums, 0.0);
+  w.grid.row_sums.assign(static_cast<std::size_t>(g.j_end - g.j_begin) * kRowSums, 0.0);
+}
+
+}  // namespace
+
+bool locate_and_sort(World& w) {
+  const int t = omp_get_thread_num(), threads = omp_get_num_threads();
+  const int n = static_cast<int>(w.points.size());
+  // Each thread takes a run of whole Lane8 blocks in index order, for the
+  // stencils and for both passes of the counting sort.
+  const int blocks = (n + 7) / 8;
+  const int first_block = blocks * t / threads, end_block = blocks * (t + 1) / threads;
+  const int lo = std::min(n, 8 * first_block), hi = std::min(n, 8 * end_block);
+  int* window = &w.thread_window[static_cast<std::size_t>(t) * kWindowInts];
+  compute_stencils(w, first_block, end_block, window);
+#pragma omp barrier
+#pragma omp single
+  set_window(w, threads);
+  if (w.bad_point < n) return false;  // every thread reads the same value
+  const Grid& g = w.grid;
+  const int width = g.i_end - 2 - g.i_begin;
+  int* counts = &w.thread_counts[static_cast<std::size_t>(t) * w.bins];
+  std::fill(counts, counts + w.bins, 0);
+  for (int p = lo; p < hi; ++p) {
+    const Stencil& st = w.stencils[p];
+    w.bin_key[p] = (st.base_j - g.j_begin) * width + (st.base_i - g.i_begin);
+    ++counts[w.bin_key[p]];
+  }
+#pragma omp barrier
+  prefix_own_bins(w, t, threads);
+#pragma omp barrier
+#pragma omp single nowait
+  finish_bands(w, threads);
+  for (int p = lo; p < hi; ++p) w.order[counts[w.bin_key[p]]++] = p;
+#pragma omp barrier
+  return true;
+}
+
+void prepare_locate(World& w) {
+  const std::size_t n = w.points.size();
+  w.stencils.resize(n);
+  w.bin_key.resize(n);
+  w.thread_window.resize(static_cast<std::size_t>(omp_get_max_threads()) * kWindowInts);
+  w.thread_totals.resize(static_cast<std::size_t>(omp_get_max_threads()));
+}
+
+void locate_points(World& w) {
+  prepare_locate(w);
+  if (!locate_and_sort(w)) throw_point_left_grid(w);
+}
+
+}  // namespace sim

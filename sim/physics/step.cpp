@@ -1,0 +1,168 @@
+// The GIMP step as a list of phases (paper Section 5). Each phase is a free
+// function over the World; only the first (locate.cpp) allocates, and only
+// when the number of points or the touched window grows.
+#include "sim/physics/step.hpp"
+
+#include <omp.h>
+
+#include <algorithm>
+
+#include "sim/physics/apic.hpp"
+#include "sim/physics/bands.hpp"
+#include "sim/physics/wall_friction.hpp"
+
+namespace sim {
+
+// The whole step is one parallel region: a thread keeps its bands of points
+// and rows of nodes from phase to phase (sim/physics/bands.hpp), and the phases are
+// separated by barriers, not by starting new teams of threads. The transfers
+// are the paper's (FLIP-like increments) or APIC's (sim/physics/apic.hpp), chosen
+// once per step.
+void step(World& w, const StepInput& in, StepReport& report) {
+  prepare_locate(w);
+  const bool apic = w.transfer == TransferScheme::Apic;
+#pragma omp parallel
+  {
+    if (locate_and_sort(w)) {  // false on every thread if a point left the grid
+      reset_grid(w);
+#pragma omp barrier
+      if (apic) points_to_grid_apic(w); else points_to_grid(w);
+      enforce_walls_on_momentum(w);
+#pragma omp barrier
+      update_stress_and_forces(w, in);
+      update_nodal_momentum(w, in.dt);
+#pragma omp barrier
+      if (apic) grid_to_points_apic(w, in); else grid_to_points(w, in);
+    }
+  }
+  if (w.bad_point < static_cast<int>(w.points.size())) throw_point_left_grid(w);
+  report = sum_step_report(w);
+}
+
+void reset_grid(World& w) {
+  Grid& g = w.grid;
+  int first, last;
+  own_rows(w, first, last);
+  for (int j = first; j < last; ++j) {
+    for (int i = g.i_begin; i < g.i_end; ++i) {
+      const int k = g.node(i, j);
+      g.mass[k] = g.px[k] = g.py[k] = g.fx[k] = g.fy[k] = 0.0;
+    }
+  }
+  if (!g.friction_walls.empty()) reset_wall_gaps(g, first, last);
+}
+
+void points_to_grid(World& w) {
+  const Particles& pts = w.points;
+  Grid& g = w.grid;
+  scatter_own_bands(w, [&](int band) {
+    for (int s = w.band_start[band]; s < w.band_start[band + 1]; ++s) {
+      const int p = w.order[s];
+      const Stencil& st = w.stencils[p];
+      const double m = pts.mass[p], mvx = m * pts.vx[p], mvy = m * pts.vy[p];
+      for (int b = 0; b < 3; ++b) {
+        const int row = g.node(st.base_i, st.base_j + b);
+        const Lane4 S = st.wx * st.wy[b];                   // S_ip, Eq. (12)
+        store4(&g.mass[row], load4(&g.mass[row]) + S * m);  // Eq. (26)
+        store4(&g.px[row], load4(&g.px[row]) + S * mvx);    // Eq. (27)
+        store4(&g.py[row], load4(&g.py[row]) + S * mvy);
+      }
+    }
+    if (!g.friction_walls.empty()) scatter_wall_gaps(w, band);
+  });
+}
+
+// Walls hold nodal momentum components at zero (paper Section 6). Nodal
+// velocity v_i = p_i / m_i is what the strain increment of Eq. (31) reads.
+// The velocity a wall takes away is kept (in ax, ay) and handed to the points
+// with the step's acceleration: with the incremental update of Eq. (30) a
+// point would otherwise keep the speed a no-slip wall stopped, and a deposit
+// against a wall would never come to rest. The kinetic energy taken goes to
+// row_sums, row by row. Friction walls act after the holds.
+void enforce_walls_on_momentum(World& w) {
+  Grid& g = w.grid;
+  int first, last;
+  own_rows(w, first, last);
+  if (w.transfer == TransferScheme::Apic) grid_kinetic_by_row(g, first, last, kRowGridKineticMapped);
+  for (int j = first; j < last; ++j) {
+    double removed = 0;
+    for (int i = g.i_begin; i < g.i_end; ++i) {
+      const int k = g.node(i, j);
+      const double inv = g.mass[k] > 0.0 ? 1.0 / g.mass[k] : 0.0;
+      g.ax[k] = g.fix_x[k] ? -g.px[k] * inv : 0.0;
+      g.ay[k] = g.fix_y[k] ? -g.py[k] * inv : 0.0;
+      removed -= 0.5 * (g.px[k] * g.ax[k] + g.py[k] * g.ay[k]);
+      if (g.fix_x[k]) g.px[k] = 0.0;
+      if (g.fix_y[k]) g.py[k] = 0.0;
+      g.vx[k] = g.px[k] * inv;
+      g.vy[k] = g.py[k] * inv;
+    }
+    // A held component's change is all it had: the grid loses what it takes.
+    double* sums = &g.row_sums[(j - g.j_begin) * kRowSums];
+    sums[kRowWallLoss] = removed;
+    sums[kRowWallChangeOnGrid] = removed;
+  }
+  if (!g.friction_walls.empty()) friction_walls_on_momentum(g, first, last);
+}
+
+// Eq. (28): p_i^{k+1} = p_i^k + dt f_i. Walls take the force normal to them;
+// friction walls then act on p_i^{k+1}.
+// The nodal acceleration handed to the points (Eq. 30) is the whole velocity
+// change of the step: force plus what the wall took away.
+void update_nodal_momentum(World& w, double dt) {
+  Grid& g = w.grid;
+  const double inv_dt = 1.0 / dt;
+  int first, last;
+  own_rows(w, first, last);
+  for (int j = first; j < last; ++j) {
+    for (int i = g.i_begin; i < g.i_end; ++i) {
+      const int k = g.node(i, j);
+      if (g.fix_x[k]) g.fx[k] = 0.0;
+      if (g.fix_y[k]) g.fy[k] = 0.0;
+      g.px[k] += dt * g.fx[k];
+      g.py[k] += dt * g.fy[k];
+      const double inv = g.mass[k] > 0.0 ? 1.0 / g.mass[k] : 0.0;
+      g.ax[k] = g.ax[k] * inv_dt + g.fx[k] * inv;
+      g.ay[k] = g.ay[k] * inv_dt + g.fy[k] * inv;
+      g.held_ax[k] = g.fix_x[k] ? g.ax[k] : 0.0;
+      g.held_ay[k] = g.fix_y[k] ? g.ay[k] : 0.0;
+      g.vx[k] = g.px[k] * inv;
+      g.vy[k] = g.py[k] * inv;
+    }
+  }
+  if (!g.friction_walls.empty()) friction_walls_on_update(g, first, last, dt);
+  if (w.transfer == TransferScheme::Apic) grid_kinetic_by_row(g, first, last, kRowGridKineticUpdated);
+}
+
+// The step's sums, band by band (row by row for the walls) in a fixed order.
+StepReport sum_step_report(const World& w) {
+  StepReport r;
+  double wall_change_on_grid = 0, grid_mapped = 0, grid_updated = 0, points_before = 0;
+  for (std::size_t row = 0; row < w.grid.row_sums.size(); row += kRowSums) {
+    const double* sums = &w.grid.row_sums[row];
+    r.wall_loss += sums[kRowWallLoss];
+    r.friction_work += sums[kRowFrictionWork];
+    wall_change_on_grid += sums[kRowWallChangeOnGrid];
+    grid_mapped += sums[kRowGridKineticMapped];
+    grid_updated += sums[kRowGridKineticUpdated];
+  }
+  for (std::size_t b = 0; b + 1 < w.band_start.size(); ++b) {
+    const double* sums = &w.band_sums[b * kBandSums];
+    r.internal_work += sums[kInternalWork];
+    r.gravity_work += sums[kGravityWork];
+    r.kinetic_energy += sums[kKineticEnergy];
+    r.moving_kinetic_energy += sums[kMovingKineticEnergy];
+    r.damping_loss += sums[kDampingLoss];
+    r.max_signal = std::max(r.max_signal, sums[kMaxSignal]);
+    r.wall_change_on_points += sums[kWallChangeOnPoints];
+    points_before += sums[kKineticBeforeGrid];
+  }
+  // FLIP: what the walls' change costs the points beyond what the walls took
+  // (StepReport); APIC: both transfers' loss, measured (sim/physics/apic.hpp).
+  r.transfer_loss = w.transfer == TransferScheme::Apic
+                        ? (points_before - grid_mapped) + (grid_updated - r.moving_kinetic_energy)
+                        : wall_change_on_grid - r.wall_change_on_points;
+  return r;
+}
+
+}  // namespace sim

@@ -1,0 +1,80 @@
+// Everything one GIMP step reads and writes: the points, the grid, the
+// material constants, and scratch space reused every step (no allocation
+// inside the step once the first step has sized it).
+#pragma once
+
+#include <stdexcept>
+#include <vector>
+
+#include "sim/physics/gimp.hpp"
+#include "sim/physics/grid.hpp"
+#include "sim/physics/material.hpp"
+#include "sim/physics/particles.hpp"
+#include "sim/physics/spec.hpp"
+
+namespace sim {
+
+// The step found something it cannot go on from (a point leaving the grid, a
+// non-finite value, a time step above the stable bound).
+class SimulationError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct World {
+  Particles points;
+  Grid grid;
+  GimpShape gimp;  // cell size and the l_p of every point (uGIMP keeps the initial size)
+  TransferScheme transfer = TransferScheme::Flip;
+  std::vector<MaterialSpec> material_specs;  // as they stand now (material changes edit them)
+  std::vector<MaterialConstants> materials;
+
+  // Scratch, rebuilt every step.
+  std::vector<Stencil> stencils;  // per point
+  std::vector<int> bin_key;       // per point: grid index of its stencil's base node
+  std::vector<int> order;         // points sorted by their stencil's base node
+  std::vector<int> band_start;    // order[band_start[b] .. band_start[b+1]) is band b
+  std::vector<int> thread_counts; // counting sort: per thread, points per bin (base node)
+  std::vector<int> thread_window; // per thread: touched window and first point off the grid
+  std::vector<int> thread_totals; // per thread: points in its run of bins
+  int bins = 0;                   // base nodes in the window
+  int bad_point = 0;              // first point off the grid (the number of points if none)
+  std::vector<int> thread_bands;  // thread t owns bands [thread_bands[t], thread_bands[t+1])
+  std::vector<double> band_sums;  // per band partial sums of the step's reductions
+};
+
+// Rows of base nodes per band. Two bands apart never share a node (a stencil
+// spans 3 rows), so every other band can be scattered to the grid at once.
+constexpr int kBandRows = 4;
+
+// Partial sums per band, band_sums[band * kBandSums + which] (the StepReport
+// fields of the same names). Summed band by band in order, so they do not
+// depend on the number of threads.
+enum BandSum : int {
+  kInternalWork,
+  kGravityWork,
+  kKineticEnergy,
+  kMovingKineticEnergy,
+  kDampingLoss,
+  kMaxSignal,  // a maximum, not a sum
+  kWallChangeOnPoints,
+  kKineticBeforeGrid,  // APIC: the points' kinetic energy at the start of the step
+  kBandSums  // how many
+};
+
+// What a velocity update (grid to points) sums over one band's points.
+struct PointSums {
+  double gravity_work, kinetic, moving, damped, signal, walled;
+};
+
+inline void store_point_sums(World& w, int band, const PointSums& s) {
+  double* sums = &w.band_sums[band * kBandSums];
+  sums[kGravityWork] = s.gravity_work;
+  sums[kKineticEnergy] = s.kinetic;
+  sums[kMovingKineticEnergy] = s.moving;
+  sums[kDampingLoss] = s.damped;
+  sums[kMaxSignal] = s.signal;
+  sums[kWallChangeOnPoints] = s.walled;
+}
+
+}  // namespace sim

@@ -1,0 +1,239 @@
+// Saving and restoring a Simulation between steps (checkpoints, and the
+// gravity stage one scenario can reuse from another), and the key that says
+// when a saved state belongs to a scenario.
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <type_traits>
+
+#include "sim/io/binary_io.hpp"
+#include "sim/run/simulation.hpp"
+
+namespace sim {
+
+namespace {
+
+// "LSSTATE" and a format version; bump the version whenever the layout below
+// changes, so an old file is refused rather than misread.
+constexpr std::uint64_t kMagic = 0x4c53535441544502ULL;
+// Read back as another number on a machine of the other byte order.
+constexpr std::uint64_t kByteOrder = 0x0102030405060708ULL;
+
+static_assert(std::is_trivially_copyable<EnergyBalance>::value, "EnergyBalance is raw bytes");
+
+void put_material(BinaryWriter& w, const MaterialSpec& m) {
+  w.put_string(m.name);
+  w.put(m.model);
+  for (double v : {m.density, m.youngs_modulus, m.poisson_ratio, m.cohesion, m.friction_angle,
+                   m.dilation_angle, m.critical_density})
+    w.put(v);
+}
+
+MaterialSpec get_material(BinaryReader& r) {
+  MaterialSpec m;
+  m.name = r.get_string();
+  m.model = r.get<MaterialModel>();
+  for (double* v : {&m.density, &m.youngs_modulus, &m.poisson_ratio, &m.cohesion,
+                    &m.friction_angle, &m.dilation_angle, &m.critical_density})
+    *v = r.get<double>();
+  return m;
+}
+
+void put_result(BinaryWriter& w, const StageResult& r) {
+  w.put_string(r.name);
+  w.put(r.type);
+  for (double v : {r.simulated_time, r.wall_time, r.kinetic_energy, r.moving_kinetic_energy,
+                   r.gravity_work})
+    w.put(v);
+  w.put(r.steps);
+  w.put(r.ended_at_rest);
+  w.put(r.energy);
+  const StageMetrics& m = r.metrics;
+  for (double v : {m.max_soil_ux, m.initial_toe, m.toe, m.runout, m.main_body_fraction, m.packed_fraction, m.disconnected_fraction,
+                   m.yielding_fraction, m.deposit_slope_deg})
+    w.put(v);
+  w.put(std::uint64_t(m.materials.size()));
+  for (const MaterialMotion& mm : m.materials) {
+    w.put_string(mm.material);
+    for (double v : {mm.mean_ux, mm.mean_uy, mm.max_displacement}) w.put(v);
+  }
+}
+
+StageResult get_result(BinaryReader& rd) {
+  StageResult r;
+  r.name = rd.get_string();
+  r.type = rd.get<StageType>();
+  for (double* v : {&r.simulated_time, &r.wall_time, &r.kinetic_energy, &r.moving_kinetic_energy,
+                    &r.gravity_work})
+    *v = rd.get<double>();
+  r.steps = rd.get<long>();
+  r.ended_at_rest = rd.get<bool>();
+  r.energy = rd.get<EnergyBalance>();
+  StageMetrics& m = r.metrics;
+  for (double* v : {&m.max_soil_ux, &m.initial_toe, &m.toe, &m.runout,
+                    &m.main_body_fraction, &m.packed_fraction, &m.disconnected_fraction, &m.yielding_fraction, &m.deposit_slope_deg})
+    *v = rd.get<double>();
+  const auto n = rd.get<std::uint64_t>();
+  if (n > 256) rd.fail("a stage result lists " + std::to_string(n) + " materials");
+  m.materials.resize(n);
+  for (MaterialMotion& mm : m.materials) {
+    mm.material = rd.get_string();
+    for (double* v : {&mm.mean_ux, &mm.mean_uy, &mm.max_displacement}) *v = rd.get<double>();
+  }
+  return r;
+}
+
+// The arrays of the points, in one fixed order for writing and reading.
+template <class P>
+auto point_arrays(P& p) {
+  return std::array<decltype(&p.x), 14>{&p.x,   &p.y,   &p.vx,  &p.vy,  &p.mass,
+                                        &p.density, &p.sxx, &p.syy, &p.sxy, &p.szz,
+                                        &p.x0,  &p.y0,  &p.ref_x, &p.ref_y};
+}
+
+// 64-bit FNV-1a.
+std::uint64_t hash_bytes(const std::string& bytes) {
+  std::uint64_t h = 1469598103934665603ULL;
+  for (const unsigned char c : bytes) {
+    h ^= c;
+    h *= 1099511628211ULL;
+  }
+  return h;
+}
+
+}  // namespace
+
+std::uint64_t stage_prefix_key(const Scenario& s, std::size_t stages) {
+  BinaryWriter w;
+  for (double v : {s.domain_min[0], s.domain_min[1], s.domain_max[0], s.domain_max[1],
+                   s.cell_size, s.gravity[0], s.gravity[1], s.time_step.courant,
+                   s.time_step.fixed_dt})
+    w.put(v);
+  w.put(s.padding_cells);
+  w.put(s.points_per_cell);
+  for (const Wall& wall : {s.boundaries.left, s.boundaries.right, s.boundaries.bottom,
+                          s.boundaries.top}) {
+    w.put(wall.kind);
+    w.put(wall.friction);
+  }
+  w.put(s.time_step.mode);
+  w.put(s.transfer);
+  for (const MaterialSpec& m : s.materials) put_material(w, m);
+  for (const BodySpec& b : s.bodies) {
+    w.put_string(b.name);
+    w.put(b.material);
+    w.put_vector(b.polygon);
+  }
+  w.put_string(s.output.displacement_reference);
+  w.put(s.output.frame_interval);
+  for (std::size_t k = 0; k < std::min(stages, s.stages.size()); ++k) {
+    const StageSpec& st = s.stages[k];
+    w.put_string(st.name);
+    w.put(st.type);
+    for (double v : {st.duration, st.ramp_fraction, st.damping, st.rest.kinetic_ratio,
+                     st.rest.min_time})
+      w.put(v);
+    w.put(st.rest.enabled);
+    for (const MaterialChange& c : st.changes) {
+      w.put(c.material);
+      w.put_string(c.property);
+      w.put(c.value);
+    }
+    w.put(stage_is_painted(s, st));
+  }
+  return hash_bytes(w.bytes());
+}
+
+std::size_t reusable_stages(const Scenario& s) {
+  for (std::size_t k = 0; k < s.stages.size(); ++k) {
+    const StageSpec& st = s.stages[k];
+    if (stage_is_painted(s, st)) return 0;
+    if (s.output.vtk == "interval") return 0;  // nor writes the states of its steps
+    if (st.type == StageType::Gravity) return k + 1;
+  }
+  return 0;
+}
+
+std::string Simulation::save_state() const { return save_state(std::string()); }
+
+std::string Simulation::save_state(std::string buffer) const {
+  BinaryWriter w(std::move(buffer));
+  w.put(kMagic);
+  w.put(kByteOrder);
+  const std::size_t defined = stage_index_ + (progress_.started ? 1 : 0);
+  w.put(std::uint64_t(defined));
+  w.put(stage_prefix_key(scenario_, defined));
+  w.put(time_);
+  w.put(stage_time_);
+  w.put(gravity_factor_);
+  w.put(frames_);
+  w.put(std::uint64_t(stage_index_));
+  w.put(std::uint64_t(results_.size()));
+  for (const StageResult& r : results_) put_result(w, r);
+  const StageProgress& p = progress_;
+  w.put(p.started);
+  if (p.started) {
+    StageResult r = p.result;
+    r.wall_time +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start_).count();
+    put_result(w, r);
+    for (double v : {p.max_signal, p.kinetic_start, p.elastic_start}) w.put(v);
+    w.put(p.next_frame);
+  }
+  w.put(std::uint64_t(world_.material_specs.size()));
+  for (const MaterialSpec& m : world_.material_specs) put_material(w, m);
+  const Particles& pts = world_.points;
+  w.put(std::uint64_t(pts.size()));
+  for (const std::vector<double>* a : point_arrays(pts)) w.put_vector(*a);
+  w.put_vector(pts.material);
+  w.put_vector(pts.yielded);
+  if (world_.transfer == TransferScheme::Apic)
+    for (const std::vector<double>* a : {&pts.cxx, &pts.cxy, &pts.cyx, &pts.cyy}) w.put_vector(*a);
+  return w.take();
+}
+
+void Simulation::restore_state(const std::string& bytes, const std::string& label) {
+  BinaryReader rd(bytes, label);
+  if (bytes.size() < 16 || rd.get<std::uint64_t>() != kMagic)
+    rd.fail("not a state saved by this version of landslide");
+  if (rd.get<std::uint64_t>() != kByteOrder) rd.fail("saved on a machine of another byte order");
+  const auto defined = rd.get<std::uint64_t>();
+  if (defined > scenario_.stages.size() ||
+      rd.get<std::uint64_t>() != stage_prefix_key(scenario_, defined))
+    rd.fail("saved from another scenario: its first " + std::to_string(defined) +
+            " stages, materials, bodies, grid or time step differ from " + scenario_.source_path);
+  time_ = rd.get<double>();
+  stage_time_ = rd.get<double>();
+  gravity_factor_ = rd.get<double>();
+  frames_ = rd.get<int>();
+  stage_index_ = rd.get<std::uint64_t>();
+  const auto results = rd.get<std::uint64_t>();
+  if (results != stage_index_) rd.fail("the stage results do not match the stage index");
+  results_.clear();
+  for (std::uint64_t k = 0; k < results; ++k) results_.push_back(get_result(rd));
+  progress_ = StageProgress{};
+  progress_.started = rd.get<bool>();
+  if (progress_.started) {
+    progress_.result = get_result(rd);
+    for (double* v : {&progress_.max_signal, &progress_.kinetic_start, &progress_.elastic_start})
+      *v = rd.get<double>();
+    progress_.next_frame = rd.get<long>();
+  }
+  if (rd.get<std::uint64_t>() != world_.material_specs.size()) rd.fail("material count differs");
+  for (std::size_t m = 0; m < world_.material_specs.size(); ++m) {
+    world_.material_specs[m] = get_material(rd);
+    world_.materials[m] = make_material_constants(world_.material_specs[m]);
+  }
+  Particles& pts = world_.points;
+  const std::size_t n = pts.size();
+  if (rd.get<std::uint64_t>() != n) rd.fail("point count differs from the seeded scenario");
+  for (std::vector<double>* a : point_arrays(pts)) *a = rd.get_vector<double>(n, "a point array");
+  pts.material = rd.get_vector<std::uint8_t>(n, "the material array");
+  pts.yielded = rd.get_vector<std::uint8_t>(n, "the yielded array");
+  if (world_.transfer == TransferScheme::Apic)
+    for (std::vector<double>* a : {&pts.cxx, &pts.cxy, &pts.cyx, &pts.cyy})
+      *a = rd.get_vector<double>(n, "an affine velocity array");
+  if (!rd.at_end()) rd.fail("bytes after the end of the state");
+}
+
+}  // namespace sim

@@ -1,0 +1,48 @@
+// The watchdog: the limits a run must stay within, checked between steps.
+// A run that leaves them stops with a message naming the stage, step, time,
+// point, position and material, and hands the app the last state that was
+// still within them, so a failure after an hour loses nothing.
+#pragma once
+
+#include <string>
+
+#include "sim/physics/step.hpp"
+#include "sim/physics/world.hpp"
+
+namespace sim {
+
+// Largest density of a point relative to its material's initial density. The
+// soils here strain about 1 % under their own weight; a point squeezed to
+// two-thirds of its volume means a crushed stencil, not soil. (Expansion has
+// no bound: soil below its critical density carries no stress, so a torn-off
+// point may stretch as far as the grid takes it, sim/physics/granular.hpp.)
+constexpr double kMaxCompression = 1.5;
+
+// Steps between full scans of the points (and saves of the last good state).
+// A non-finite value anywhere is caught every step through the step's sums;
+// the density bound is checked at every scan.
+constexpr int kWatchdogScanSteps = 50;
+
+// The run stopped by a watchdog (or by any SimulationError of the step).
+// `last_good_state` is Simulation::save_state() from the last scan that
+// passed (empty if none had yet), at simulated time `last_good_time`.
+class WatchdogError : public SimulationError {
+ public:
+  WatchdogError(const std::string& what, std::string last_good_state, double last_good_time)
+      : SimulationError(what),
+        last_good_state(std::move(last_good_state)),
+        last_good_time(last_good_time) {}
+  std::string last_good_state;
+  double last_good_time;
+};
+
+// True when every sum of the step is finite: a NaN or infinity in any
+// velocity, stress or density shows up in them.
+bool step_sums_finite(const StepReport& report);
+
+// The first point with a non-finite position, velocity, stress or density,
+// or a density above the bound: a message naming it, its position and its
+// material; "" when every point is within the limits.
+std::string find_bad_point(const World& world);
+
+}  // namespace sim

@@ -1,0 +1,25 @@
+// Pieces of the scenario reader that live in their own file.
+#pragma once
+
+#include <vector>
+
+#include "sim/scene/scenario.hpp"
+#include "sim/scene/scenario_json.hpp"
+
+namespace sim {
+
+std::vector<StageSpec> parse_stages(const scenario_json::Node& node,
+                                    const std::vector<MaterialSpec>& materials);
+// The index of the material `name` names; fails listing the defined ones.
+int material_index(const scenario_json::Node& name, const std::vector<MaterialSpec>& materials);
+OutputSpec parse_output(const scenario_json::Node& node, const std::vector<StageSpec>& stages);
+
+// Limits checked before anything is allocated: a scene asks for at most
+// kMaxPoints points and kMaxGridNodes grid nodes.
+constexpr double kMaxPoints = 20e6;
+constexpr double kMaxGridNodes = 50e6;
+constexpr double kMaxFrames = 100000;  // per stage
+void check_memory_budget_of_grid(const scenario_json::Node& root, const Scenario& s);
+void check_memory_budget_of_points(const scenario_json::Node& root, const Scenario& s);
+
+}  // namespace sim
