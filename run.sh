@@ -1,11 +1,11 @@
 #!/usr/bin/env bash
 # Fresh Debian 12 machine: install what is missing, build Release, run the
-# default scenario (the paper's slope with 1648 points) and say where its
+# default scenario (the paper's slope with 1661 points) and say where its
 # frames and videos are. Usage: ./run.sh [SCENARIO.json] [OUT_DIR]
 set -euo pipefail
 cd "$(dirname "$0")"
 scripts/setup.sh
-scenario=${1:-scenarios/paper-slope-phi20-n1648.json}
+scenario=${1:-scenarios/paper-slope-phi20-n1661.json}
 out=${2:-out/$(basename "$scenario" .json)}
 # --overwrite: run.sh always writes into the same folder, replacing its last run.
 build/app/landslide run "$scenario" --out "$out" --overwrite

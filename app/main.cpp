@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "app/commands.hpp"
+#include "app/new_command.hpp"
 
 namespace {
 
@@ -118,7 +119,7 @@ int main(int argc, char** argv) {
   gallery_cmd->add_option("--scenarios", gallery.scenarios,
                           "Folder of the paper-slope scenarios (default: scenarios)");
   gallery_cmd->add_flag("--quick", gallery.quick,
-                        "Every run at the 1648-point resolution (h = 1.127 m), for a fast check");
+                        "Every run at the 1661-point resolution (h = 1.127 m), for a fast check");
 
   app::ValidateOptions validate;
   CLI::App* validate_cmd =
@@ -127,6 +128,9 @@ int main(int argc, char** argv) {
   validate_cmd->add_flag("--quick", validate.quick, "Coarse resolutions only (the CI version)");
   validate_cmd->add_flag("--finest", validate.finest,
                          "Also the Bui column at h = 1.25 mm (minutes on one thread; not with --quick)");
+
+  app::NewOptions made;
+  CLI::App* new_cmd = app::add_new_command(cli, made);
 
   try {
     cli.parse(argc, argv);
@@ -144,5 +148,6 @@ int main(int argc, char** argv) {
   if (*panel_cmd) return app::panel_command(panel);
   if (*gallery_cmd) return app::gallery_command(gallery);
   if (*validate_cmd) return app::validate_command(validate);
+  if (*new_cmd) return app::new_command(made);
   return app::kExitBadInput;
 }

@@ -5,7 +5,7 @@
 //    at 4..32 cells over the height (--full: also 64), 1x1 and 2x2 points per
 //    cell, Courant 0.1, 0.25, 0.5: relative L2 error of sigma_yy.
 // 2. The paper's slope at phi = 20 deg (Andersen & Andersen, Section 7) at the
-//    1648- and 8370-point resolutions (--full adds 28724, not at Courant 0.1:
+//    1661- and 8370-point resolutions (--full adds 28711, not at Courant 0.1:
 //    too long), same Courant numbers, against the finest run (finest
 //    resolution, smallest Courant): relative runout error and RMS difference
 //    of the final free surface (slope_surface.hpp).
@@ -154,13 +154,13 @@ std::vector<Run> slope_study(int phi, bool full) {
     const char* label;
     double h;
   };
-  std::vector<Resolution> levels = {{"n1648", 1.127}, {"n8370", 0.5}};
-  if (full) levels.push_back({"n28724", 0.270});
+  std::vector<Resolution> levels = {{"n1661", 1.127}, {"n8370", 0.5}};
+  if (full) levels.push_back({"n28711", 0.270});
   const sim::Scenario scene = load("paper-slope-phi" + std::to_string(phi));
   std::vector<Run> runs;
   for (const Resolution& level : levels)
     for (int c = 2; c >= 0; --c) {  // cheapest first
-      if (full && std::string(level.label) == "n28724" && c == 0) continue;  // 0.1: too long
+      if (full && std::string(level.label) == "n28711" && c == 0) continue;  // 0.1: too long
       Run run;
       run.scene = level.label;
       sim::Scenario s = scene;

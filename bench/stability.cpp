@@ -23,7 +23,7 @@
 
 namespace {
 
-const std::string kSlope = LANDSLIDE_SOURCE_DIR "/scenarios/paper-slope-phi20-n1648.json";
+const std::string kSlope = LANDSLIDE_SOURCE_DIR "/scenarios/paper-slope-phi20-n1661.json";
 
 std::string read_text(const std::string& path) {
   std::ifstream in(path);
@@ -207,7 +207,7 @@ std::vector<Row> rows(bool quick) {
 
 int main(int argc, char** argv) {
   const bool quick = argc > 1 && std::strcmp(argv[1], "--quick") == 0;
-  std::printf("stability matrix: the paper slope at 1648 points (h = 1.127 m) unless named, "
+  std::printf("stability matrix: the paper slope at 1661 points (h = 1.127 m) unless named, "
               "%d threads\n",
               omp_get_max_threads());
   std::printf("%-34s %7s %8s %8s %10s %9s %5s %4s %7s  %s\n", "case", "points", "steps",

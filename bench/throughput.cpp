@@ -177,10 +177,10 @@ int main(int argc, char** argv) {
   std::vector<Scene> scenes = {{"elastic column (16 cells)", load("elastic-column")},
                                {"granular column, Mohr-Coulomb", granular_column()},
                                {"granular column, friction base", friction_column()},
-                               {"paper slope phi=20, n1648", load("paper-slope-phi20-n1648")},
+                               {"paper slope phi=20, n1661", load("paper-slope-phi20-n1661")},
                                {"paper slope phi=20, n8370", load("paper-slope-phi20")},
-                               {"paper slope phi=20, n28724", load("paper-slope-phi20-n28724")},
-                               {"paper slope phi=20, n67016", load("paper-slope-phi20-n67016")}};
+                               {"paper slope phi=20, n28711", load("paper-slope-phi20-n28711")},
+                               {"paper slope phi=20, n66787", load("paper-slope-phi20-n66787")}};
   if (child) {
     const int k = std::atoi(argv[2]);
     std::size_t points = 0;

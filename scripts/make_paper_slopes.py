@@ -19,6 +19,9 @@ TOP = 20.0
 
 # Cell size per point count (method notes section 3).
 RESOLUTIONS = {1648: 1.127, 8370: 0.5, 28724: 0.270, 67016: 0.177}
+# The points each cell size seeds (`landslide check` prints them): the files
+# are named by these, so a name says what the scene holds.
+SEEDED = {1648: 1661, 8370: 8370, 28724: 28711, 67016: 66787}
 
 # Friction angle of the soil before the trigger, the same in every scene. With
 # 40 kPa of cohesion the slope never yields in the gravity stage at any of the
@@ -37,7 +40,7 @@ CRITICAL_DENSITY = 2000
 # The region of interest of the slides that stay within it: from the back of
 # the failure (the 20 degree line from the toe reaches the crest's height at
 # x = 28 m) to past the deposit's front (toe + runout: 69 m at phi = 25, 75 to
-# 76 m at phi = 20 with 1648 and 8370 points), 1 m below the floor to 1 m
+# 76 m at phi = 20 with 1661 and 8370 points), 1 m below the floor to 1 m
 # above the house. 50 m wide, so a 1280 px frame shows the 10 m slope at
 # least 200 px tall (tests/app/test_frame_view.cpp). The finer phi = 20 scenes
 # run out to 78 and 82 m, and phi = 15 and 10 to the far wall: they are
@@ -58,11 +61,13 @@ def output(phi, points):
 
 def scenario(phi, points, name):
     h = RESOLUTIONS[points]
+    count = (f"about {points} points (h = {h} m)" if SEEDED[points] == points
+             else f"{SEEDED[points]} points (h = {h} m; the paper's {points})")
     return {
         "name": name,
         "description": (
             f"The paper's 40 degree slope with a house (Andersen & Andersen), friction {phi} deg "
-            f"after the trigger, about {points} points (h = {h} m). Gravity is ramped in with "
+            f"after the trigger, {count}. Gravity is ramped in with "
             f"cohesion 40 kPa (the soil stays elastic, so its friction angle, "
             f"{PHI_BEFORE_TRIGGER} deg until the trigger, does not matter); the trigger "
             "removes the cohesion and sets the friction angle; the slide runs until at rest."),
@@ -99,7 +104,7 @@ def scenario(phi, points, name):
 def main():
     out = pathlib.Path(__file__).resolve().parent.parent / "scenarios"
     files = {f"paper-slope-phi{phi}": (phi, 8370) for phi in (25, 20, 15, 10)}
-    files.update({f"paper-slope-phi20-n{n}": (20, n) for n in (1648, 28724, 67016)})
+    files.update({f"paper-slope-phi20-n{SEEDED[n]}": (20, n) for n in (1648, 28724, 67016)})
     for name, (phi, points) in files.items():
         text = json.dumps(scenario(phi, points, name), indent=2) + "\n"
         (out / f"{name}.json").write_text(text)

@@ -33,7 +33,7 @@ struct SlopeRun {
 // One run of paper-slope-phiN.json at cell size h and Courant number c. The
 // frame times stay (nothing is painted): the time loop lands on them, so at
 // Courant 0.5 the phi = 20 runs take the steps of the shipped scenes
-// paper-slope-phi20-n1648, paper-slope-phi20, -n28724 and -n67016. A run
+// paper-slope-phi20-n1661, paper-slope-phi20, -n28711 and -n66787. A run
 // the watchdog stops gives a failed row, not an abort.
 SlopeRun run_slope(const ValidationSuite& suite, int phi, double h, double courant) {
   sim::Scenario s = sim::load_scenario(suite.scenarios + "/paper-slope-phi" +

@@ -250,8 +250,8 @@ int gallery_command(const GalleryOptions& o) {
     return kExitBadInput;
   for (const char* f : {"paper-slope-phi20.json", "paper-slope-phi25.json",
                         "paper-slope-phi15.json", "paper-slope-phi10.json",
-                        "paper-slope-phi20-n1648.json", "paper-slope-phi20-n28724.json",
-                        "paper-slope-phi20-n67016.json"}) {
+                        "paper-slope-phi20-n1661.json", "paper-slope-phi20-n28711.json",
+                        "paper-slope-phi20-n66787.json"}) {
     try {
       sim::load_scenario((scenarios / f).string());
     } catch (const sim::ScenarioError& e) {
@@ -335,9 +335,9 @@ int gallery_command(const GalleryOptions& o) {
       std::vector<std::string> caps;
       const std::vector<std::string> files =
           o.quick ? std::vector<std::string>{"paper-slope-phi20.json"}
-                  : std::vector<std::string>{"paper-slope-phi20-n1648.json", "paper-slope-phi20.json",
-                                             "paper-slope-phi20-n28724.json",
-                                             "paper-slope-phi20-n67016.json"};
+                  : std::vector<std::string>{"paper-slope-phi20-n1661.json", "paper-slope-phi20.json",
+                                             "paper-slope-phi20-n28711.json",
+                                             "paper-slope-phi20-n66787.json"};
       for (const std::string& f : files) {
         RunResult& r = g.run(f, f == "paper-slope-phi20.json");
         panels.push_back({&r, &r.slide_end});

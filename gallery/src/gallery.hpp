@@ -12,7 +12,7 @@ namespace app {
 struct GalleryOptions {
   std::string out;        // directory
   std::string scenarios;  // "" : ./scenarios
-  bool quick = false;     // every run at h = 1.127 m (1648 points)
+  bool quick = false;     // every run at h = 1.127 m (1661 points)
 };
 int gallery_command(const GalleryOptions& options);
 

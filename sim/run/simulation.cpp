@@ -209,7 +209,7 @@ void Simulation::run_timed_stage(const StageSpec& stage, Observer& observer) {
     try {
       step(world_, StepInput{dt, g, stage.damping}, report);
     } catch (const SimulationError& e) {  // a point left the grid
-      stop_run(stage, e.what());
+      stop_run(stage, e.what() + left_grid_advice(world_, scenario_));
     }
     stage_time_ += dt;
     time_ += dt;

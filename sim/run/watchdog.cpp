@@ -21,7 +21,55 @@ std::string describe(const World& w, std::size_t p, const std::string& what) {
   return msg.str();
 }
 
+std::string wall_kind(const Wall& wall) {
+  switch (wall.kind) {
+    case BoundaryKind::Fixed: return "\"fixed\"";
+    case BoundaryKind::Roller: return "\"roller\"";
+    case BoundaryKind::Friction: {
+      std::ostringstream mu;
+      mu << "{\"friction\": " << wall.friction << "}";
+      return mu.str();
+    }
+    case BoundaryKind::Free: break;
+  }
+  return "\"free\"";
+}
+
 }  // namespace
+
+std::string left_grid_advice(const World& w, const Scenario& s) {
+  const std::size_t p = static_cast<std::size_t>(w.bad_point);
+  if (p >= w.points.size()) return "";
+  const double x = w.points.x[p], y = w.points.y[p];
+  if (!std::isfinite(x) || !std::isfinite(y)) return "";
+  struct Side {
+    bool passed;
+    const char* name;
+    const Wall& wall;
+    const char* axis;
+    double line;
+    const char* widen;
+  };
+  const Side sides[] = {
+      {x < s.domain_min[0], "left", s.boundaries.left, "x", s.domain_min[0], "domain.min[0]"},
+      {x > s.domain_max[0], "right", s.boundaries.right, "x", s.domain_max[0], "domain.max[0]"},
+      {y < s.domain_min[1], "bottom", s.boundaries.bottom, "y", s.domain_min[1], "domain.min[1]"},
+      {y > s.domain_max[1], "top", s.boundaries.top, "y", s.domain_max[1], "domain.max[1]"}};
+  for (const Side& side : sides) {
+    if (!side.passed) continue;
+    std::ostringstream msg;
+    msg << "; it passed the " << side.name << " wall (" << side.axis << " = " << side.line
+        << " m), which is " << wall_kind(side.wall);
+    if (side.wall.kind == BoundaryKind::Free)
+      msg << ": material that leaves the domain past a free wall stops the run where the grid "
+          << "ends, grid.padding_cells = " << s.padding_cells
+          << " cells beyond it. Make boundaries." << side.name
+          << " \"roller\", \"fixed\" or {\"friction\": mu} to hold it, or move "
+          << side.widen << " far enough out for the material to come to rest inside";
+    return msg.str();
+  }
+  return "";
+}
 
 std::string find_bad_point(const World& w) {
   const Particles& pts = w.points;

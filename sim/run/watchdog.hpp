@@ -8,6 +8,7 @@
 
 #include "sim/physics/step.hpp"
 #include "sim/physics/world.hpp"
+#include "sim/scene/scenario.hpp"
 
 namespace sim {
 
@@ -44,5 +45,14 @@ bool step_sums_finite(const StepReport& report);
 // or a density above the bound: a message naming it, its position and its
 // material; "" when every point is within the limits.
 std::string find_bad_point(const World& world);
+
+// What to do about world.bad_point, the first point that left the grid: the
+// wall it passed (by its position against the domain), what that wall holds
+// and the fix, e.g. "; it passed the right wall (x = 80 m), which is "free":
+// ...". A point cannot be dropped (the run's mass and energy balance hold
+// every point), and the grid ends padding_cells beyond each wall, so past a
+// free wall the run cannot go on. "" when the point's position is not finite
+// or inside the domain.
+std::string left_grid_advice(const World& world, const Scenario& scenario);
 
 }  // namespace sim

@@ -18,31 +18,15 @@
 
 #include "output/counted.hpp"
 #include "block_scene.hpp"
+#include "run_binary.hpp"
 #include "render/video.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
 
-struct Result {
-  int status = -1;
-  std::string output;  // stdout and stderr together
-};
-
-// Runs `landslide ARGS` in `dir`.
-Result landslide(const std::string& args, const fs::path& dir) {
-  const std::string command =
-      "cd '" + dir.string() + "' && '" LANDSLIDE_BINARY "' " + args + " 2>&1";
-  Result r;
-  FILE* pipe = ::popen(command.c_str(), "r");
-  if (!pipe) return r;
-  char buffer[4096];
-  for (std::size_t n; (n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0;)
-    r.output.append(buffer, n);
-  const int status = ::pclose(pipe);
-  r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
-}
+using apptest::landslide;
+using apptest::Result;
 
 // One material, one body, one stage (with a rest test), one painted field.
 std::string single_scene() {
@@ -139,6 +123,29 @@ TEST_F(CliMessages, StageLineGivesTheRestTestsKineticEnergy) {
   EXPECT_GT(std::fabs(points - moving), 1e-3 * moving) << "the two energies must differ for "
                                                           "this test to tell them apart";
   EXPECT_GT(std::stod(m[2].str()), 0);
+}
+
+// A block dropped through a free floor leaves the grid: the run stops (exit
+// 1) and says which wall it passed, that the wall is free and what holds it.
+TEST_F(CliMessages, PointPastAFreeWallNamesTheWallAndTheFix) {
+  std::ofstream(root_ / "drop.json") << R"({
+    "name": "drop", "domain": {"min": [0, 0], "max": [2, 2]},
+    "grid": {"cell_size": 0.5, "padding_cells": 2, "points_per_cell": 1},
+    "gravity": [0, -9.81],
+    "boundaries": {"left": "roller", "right": "roller", "bottom": "free", "top": "free"},
+    "materials": {"rock": {"model": "linear-elastic", "density": 2000, "youngs_modulus": 1e6,
+                           "poisson_ratio": 0.25}},
+    "bodies": [{"name": "rock", "material": "rock", "rectangle": {"min": [0.5, 1], "max": [1.5, 2]}}],
+    "time_step": {"courant": 0.5},
+    "stages": [{"name": "fall", "type": "dynamic", "duration": 2}],
+    "output": {}})";
+  const Result r = landslide("run drop.json --out out --threads 1", root_);
+  EXPECT_EQ(r.status, 1) << r.output;
+  for (const char* part : {"left the grid", "it passed the bottom wall (y = 0 m), which is \"free\"",
+                           "grid.padding_cells = 2 cells beyond it",
+                           "Make boundaries.bottom \"roller\", \"fixed\" or {\"friction\": mu}",
+                           "move domain.min[1] far enough out"})
+    EXPECT_NE(r.output.find(part), std::string::npos) << part << "\n" << r.output;
 }
 
 }  // namespace

@@ -145,7 +145,7 @@ TEST(FrameRecorder, HoldsOneFrameInMemoryHoweverManyAreCaptured) {
 // 200 px tall in its frames (issue 14).
 TEST(View, DefaultSceneShowsTheSlopeAtLeast200PxTall) {
   const sim::Scenario s =
-      sim::load_scenario(LANDSLIDE_SOURCE_DIR "/scenarios/paper-slope-phi20-n1648.json");
+      sim::load_scenario(LANDSLIDE_SOURCE_DIR "/scenarios/paper-slope-phi20-n1661.json");
   const sim::Simulation sim(s);
   const app::Frame frame = app::capture_frame(sim.world(), {app::Field::DisplacementX}, 0, 0, "slide");
   app::Extent extent;

@@ -27,8 +27,8 @@ namespace fs = std::filesystem;
 
 const char* const kScenes[] = {"paper-slope-phi20.json",        "paper-slope-phi25.json",
                                "paper-slope-phi15.json",        "paper-slope-phi10.json",
-                               "paper-slope-phi20-n1648.json",  "paper-slope-phi20-n28724.json",
-                               "paper-slope-phi20-n67016.json"};
+                               "paper-slope-phi20-n1661.json",  "paper-slope-phi20-n28711.json",
+                               "paper-slope-phi20-n66787.json"};
 constexpr double kSlide = 4.5;  // s; the longest slide of the copies
 const char* const kSideBySide = "anim-friction-angles-displacement-x";
 

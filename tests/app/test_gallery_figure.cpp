@@ -26,7 +26,7 @@ app::Frame block_frame(double shift) {
 
 TEST(GalleryFigure, TextIsAtLeastOnePointTwoPercentOfThePageWidth) {
   const sim::Scenario s = sim::load_scenario(std::string(LANDSLIDE_SOURCE_DIR) +
-                                             "/scenarios/paper-slope-phi20-n1648.json");
+                                             "/scenarios/paper-slope-phi20-n1661.json");
   const std::vector<app::Frame> frames = {block_frame(0), block_frame(3), block_frame(6),
                                           block_frame(9)};
   const app::FieldStyle style = app::field_style(app::Field::DisplacementX, s);

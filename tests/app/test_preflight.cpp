@@ -74,7 +74,7 @@ class Preflight : public ::testing::Test {
   static json tiny_block() { return json::parse(apptest::kTinyBlock); }
   static json shipped_slope() {
     return json::parse(
-        read_text(fs::path(LANDSLIDE_SOURCE_DIR) / "scenarios/paper-slope-phi20-n1648.json"));
+        read_text(fs::path(LANDSLIDE_SOURCE_DIR) / "scenarios/paper-slope-phi20-n1661.json"));
   }
 
   // `check` and `run` of the scene with the same extra options both exit 2

@@ -65,7 +65,7 @@ TEST(FrameText, TitleAndBarLabelKeepTheirSizeInA480PxFrame) {
     FrameSpec s;
     s.width = 480;
     s.world_x0 = 28, s.world_x1 = 78, s.world_y1 = world_h;
-    s.title = "paper-slope-phi20-n1648 \u2014 horizontal displacement (slide)";
+    s.title = "paper-slope-phi20-n1661 \u2014 horizontal displacement (slide)";
     s.field_label = "relative yield (1: at yield, 2: yielded this step)";
     s.height = fit_frame_height(font, s);
     const FrameLayout L = layout_frame(font, s);

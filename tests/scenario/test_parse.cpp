@@ -254,8 +254,8 @@ TEST(ScenarioParse, DilationMayEqualFriction) {
 
 TEST(ScenarioParse, LoadScenarioReadsEveryCommittedScene) {
   for (const char* name : {"elastic-column", "paper-slope-phi10", "paper-slope-phi15",
-                           "paper-slope-phi20", "paper-slope-phi25", "paper-slope-phi20-n1648",
-                           "paper-slope-phi20-n28724", "paper-slope-phi20-n67016"}) {
+                           "paper-slope-phi20", "paper-slope-phi25", "paper-slope-phi20-n1661",
+                           "paper-slope-phi20-n28711", "paper-slope-phi20-n66787"}) {
     const std::string path = std::string(LANDSLIDE_SOURCE_DIR) + "/scenarios/" + name + ".json";
     const sim::Scenario s = sim::load_scenario(path);
     EXPECT_EQ(s.name, name);

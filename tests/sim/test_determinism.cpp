@@ -29,7 +29,7 @@ std::uint64_t run_with_threads(const char* file, int threads) {
 TEST(Determinism, OneAndTwoThreadsGiveTheSameState) {
   // The paper's slope with its house: Mohr-Coulomb soil, an elastic body,
   // walls, the gravity ramp and the first second of the slide.
-  const char* file = LANDSLIDE_SOURCE_DIR "/scenarios/paper-slope-phi20-n1648.json";
+  const char* file = LANDSLIDE_SOURCE_DIR "/scenarios/paper-slope-phi20-n1661.json";
   const std::uint64_t one = run_with_threads(file, 1);
   const std::uint64_t two = run_with_threads(file, 2);
   std::printf("state hash: 1 thread %016llx, 2 threads %016llx\n",

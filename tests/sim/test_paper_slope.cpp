@@ -1,4 +1,4 @@
-// The paper's slope and house (method notes section 3) at the 1648-point
+// The paper's slope and house (method notes section 3) at the 1661-point
 // resolution, for the four friction angles of the paper's Figure 12:
 // stable under gravity before the trigger, and after the cohesion is removed
 // the runout grows as the friction angle falls (paper Section 7.2).

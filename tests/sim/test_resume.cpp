@@ -15,10 +15,10 @@ namespace {
 
 using simtest::state_hash;
 
-// The paper's slope at 1648 points, cut short: 1 s of gravity, the trigger,
+// The paper's slope at 1661 points, cut short: 1 s of gravity, the trigger,
 // 1 s of slide, with frames every 0.25 s of the slide.
 sim::Scenario short_slope() {
-  sim::Scenario s = sim::load_scenario(LANDSLIDE_SOURCE_DIR "/scenarios/paper-slope-phi20-n1648.json");
+  sim::Scenario s = sim::load_scenario(LANDSLIDE_SOURCE_DIR "/scenarios/paper-slope-phi20-n1661.json");
   for (sim::StageSpec& stage : s.stages) {
     stage.duration = std::min(stage.duration, 1.0);
     stage.rest.enabled = false;

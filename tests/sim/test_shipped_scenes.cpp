@@ -1,7 +1,7 @@
 // Every shipped scene of up to the 8370-point slopes runs to its end, with the
 // same steps as `landslide run` (frame times included: the time loop lands on
 // them), and every stage that may stop at rest does so. The finer slopes
-// (n28724, n67016) run in `landslide validate --finest`. A change of bits can
+// (n28711, n66787) run in `landslide validate --finest`. A change of bits can
 // break a chaotic slide that no test runs; this one runs them all.
 #include <gtest/gtest.h>
 
@@ -42,7 +42,7 @@ TEST_P(ShippedScene, RunsToItsEnd) {
 INSTANTIATE_TEST_SUITE_P(Scenes, ShippedScene,
                          testing::Values("elastic-column", "paper-slope-phi25", "paper-slope-phi20",
                                          "paper-slope-phi15", "paper-slope-phi10",
-                                         "paper-slope-phi20-n1648", "validation/bui2008-column"),
+                                         "paper-slope-phi20-n1661", "validation/bui2008-column"),
                          [](const testing::TestParamInfo<const char*>& info) {
                            std::string name = info.param;
                            for (char& c : name)
