@@ -56,12 +56,13 @@ void Progress::update(const std::string& stage, double t, double duration, long 
     const int filled = static_cast<int>(share * kWidth);
     std::fprintf(stderr, "\r%-10s [", stage.c_str());
     for (int i = 0; i < kWidth; ++i) std::fputc(i < filled ? '#' : '.', stderr);
-    std::fprintf(stderr, "] t = %7.3f / %.3g s  %8ld steps  %7.0f steps/s  %-16s", t, duration,
-                 steps, rate, left.c_str());
+    std::fprintf(stderr, "] t = %7.3f / %.3g s  %8ld step%s  %7.0f steps/s  %-16s", t, duration,
+                 steps, steps == 1 ? " " : "s", rate, left.c_str());
     open_line_ = true;
   } else {
-    std::fprintf(stderr, "%s: t = %.3f / %.3g s, %ld steps, %.0f steps/s%s%s\n", stage.c_str(), t,
-                 duration, steps, rate, left.empty() ? "" : ", ", left.c_str());
+    std::fprintf(stderr, "%s: t = %.3f / %.3g s, %ld step%s, %.0f steps/s%s%s\n", stage.c_str(),
+                 t, duration, steps, steps == 1 ? "" : "s", rate, left.empty() ? "" : ", ",
+                 left.c_str());
   }
   std::fflush(stderr);
 }

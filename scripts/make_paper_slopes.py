@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """Writes the paper's slope scenarios (scenarios/paper-slope-*.json).
 
-Geometry and soil follow the reconstruction in ../shared/design/method-notes.md
-section 3: a 10 m high slope at 40 degrees, crest from x = 0 to 43.95 m, toe at
+Geometry and soil follow the reconstruction described in docs/method.md,
+section 3.10: a 10 m high slope at 40 degrees, crest from x = 0 to 43.95 m, toe at
 55.87 m, a 6 m x 4 m elastic house 2 m behind the crest edge, 60 m of runout
 floor right of the toe. Rerun after changing anything here; the JSON files are
 what the program reads.
