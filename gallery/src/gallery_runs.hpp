@@ -1,0 +1,192 @@
+// The gallery's runs: each committed scenario run once, its states kept for
+// the figures (gallery_observer.hpp), its gravity stage shared with the
+// scenes whose stages match (as --state-cache does, in memory).
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "gallery/src/gallery_figure.hpp"
+#include "gallery/src/gallery_observer.hpp"
+#include "gallery/src/gallery_parts.hpp"
+#include "output/frames.hpp"
+#include "output/series_plot.hpp"
+#include "render/png_io.hpp"
+#include "render/video.hpp"
+#include "sim/run/simulation.hpp"
+
+namespace app::gallery {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+inline double seconds_since(Clock::time_point t) {
+  return std::chrono::duration<double>(Clock::now() - t).count();
+}
+
+class Gallery {
+ public:
+  Gallery(fs::path scenarios, fs::path out, bool quick)
+      : scenarios_(std::move(scenarios)), out_(std::move(out)), quick_(quick) {}
+
+  // Runs `file` (once; later calls return the same result).
+  RunResult& run(const std::string& file, bool animate = false) {
+    auto it = runs_.find(file);
+    if (it != runs_.end()) return *it->second;
+    auto r = std::make_unique<RunResult>();
+    r->scenario = sim::load_scenario((scenarios_ / file).string());
+    sim::Scenario& s = r->scenario;
+    if (quick_) s.cell_size = 1.127;
+    s.output.vtk = "none";
+    s.output.frame_interval = 0.5;
+    s.output.fields = {"displacement-x"};
+    s.output.ranges.clear();
+    // The domain is 116 m x 20 m: a low page keeps the panels free of empty bands.
+    s.output.image_size = {1280, 560};
+    std::vector<std::string> stages;
+    for (const sim::StageSpec& st : s.stages)
+      if (st.type == sim::StageType::Dynamic) stages.push_back(st.name);
+    s.output.frame_stages = stages;
+    std::unique_ptr<FrameRecorder> recorder;
+    std::unique_ptr<SeriesRecorder> series;
+    const fs::path work = out_ / ".work" / s.name;
+    if (animate) {
+      recorder = std::make_unique<FrameRecorder>(s, work);
+      series = std::make_unique<SeriesRecorder>(s, work);
+      fs::create_directories(work);
+      recorder->start();
+    }
+    const auto start = Clock::now();
+    sim::Simulation simulation(s);
+    r->points = simulation.world().points.size();
+    std::cerr << "running " << s.name << " (" << r->points << " points, h = " << s.cell_size
+              << " m)\n";
+    GalleryObserver observer(*r, recorder.get(), series.get());
+    share_gravity_stage(simulation, observer);
+    try {
+      simulation.run(observer);
+    } catch (const sim::ScenarioError&) {
+      throw;
+    } catch (const std::exception& e) {
+      // A failed run (e.g. a point thrown out of the grid) still shows its
+      // last frame; the figure's caption says so.
+      r->failed = e.what();
+      std::cerr << "  " << s.name << ": the run failed: " << e.what() << '\n';
+      if (r->has_last) {
+        r->slide_end = r->last;
+        r->slide_time = r->last.time;
+      } else {
+        r->slide_end = r->gravity_end;
+      }
+      if (recorder && recorder->pending() > 0) recorder->paint_pending();
+    }
+    r->wall = seconds_since(start);
+    std::cerr << "  " << s.name << ": " << fmt(r->wall) << " s wall, slide "
+              << fmt(r->slide_time) << " s" << (r->at_rest ? " (at rest)" : "") << ", runout "
+              << fmt(r->runout) << " m\n";
+    if (recorder) {
+      const auto v0 = Clock::now();
+      for (const render::VideoFiles& v : recorder->encode_videos()) {
+        const std::string base = "anim-" + s.name + "-displacement-x";
+        copy_atomically(v.mp4, out_ / (base + ".mp4"));
+        if (!v.gif.empty()) copy_atomically(v.gif, out_ / (base + ".gif"));
+        r->videos.push_back({(out_ / (base + ".mp4")).string(),
+                             v.gif.empty() ? "" : (out_ / (base + ".gif")).string()});
+      }
+      std::cerr << "  encoded the animation in " << fmt(seconds_since(v0)) << " s\n";
+      series->write();
+      r->series = read_series(work / "series.csv");
+      fs::remove_all(work);
+    }
+    run_wall_ += r->wall;
+    return *runs_.emplace(file, std::move(r)).first->second;
+  }
+
+  // One page: the panels of `field` from `frames`, one colour range over all.
+  void figure(const std::string& file, const std::string& title,
+              const std::vector<std::pair<const RunResult*, const Frame*>>& panels,
+              const std::vector<std::string>& captions, Field field) {
+    const std::size_t k = field_index(field);
+    const FieldStyle style = field_style(field, panels.front().first->scenario);
+    // A run that failed before its first captured state leaves an empty
+    // frame: it is painted as an empty plot (its caption says why).
+    std::vector<Frame> frames;
+    for (const auto& p : panels) {
+      frames.push_back(*p.second);
+      frames.back().values.resize(kFields.size());
+    }
+    std::vector<const std::vector<float>*> values;
+    for (const Frame& f : frames) values.push_back(&f.values[k]);
+    const Range range = field_range(style, values);
+    std::vector<gallery::FigurePanel> page;
+    for (std::size_t i = 0; i < panels.size(); ++i)
+      page.push_back({&panels[i].first->scenario, &frames[i], captions[i]});
+    gallery::FigureShape shape;
+    shape.cols = panels.size() >= 4 ? 2 : 1;
+    shape.title = title;
+    render::Font font;
+    render::write_png(gallery::figure_page(font, painter(), page, k, style, range, shape).image,
+                      (out_ / file).string());
+  }
+
+  // The slide's end beside the run's time series (output/series_plot.hpp), the
+  // frame as `landslide run` paints it.
+  void with_series(const std::string& file, const RunResult& r) {
+    if (r.series.empty()) return;
+    const FieldStyle style = field_style(Field::DisplacementX, r.scenario);
+    const Range range = field_range(style, {&r.slide_end.values[0]});
+    const render::FrameSpec spec =
+        frame_spec(r.scenario, style, r.scenario.output.colour_map, range, r.slide_end);
+    render::Font font;
+    const double t = run_time_of(r.series, r.slide_end.stage, r.slide_end.time);
+    render::write_png(beside_series(font, painter().paint(spec, r.slide_end, 0), r.series, t),
+                      (out_ / file).string());
+  }
+
+  // Scenes whose gravity stages have the same inputs (sim::stage_prefix_key:
+  // the four friction angles of one resolution) compute it once: the first
+  // saves its state at the end of the stage, the others start from it.
+  void share_gravity_stage(sim::Simulation& simulation, GalleryObserver& observer) {
+    const sim::Scenario& s = simulation.scenario();
+    const std::size_t shared = sim::reusable_stages(s);
+    if (shared == 0) return;
+    std::string& saved = gravity_states_[sim::stage_prefix_key(s, shared)];
+    if (saved.empty()) {
+      observer.save_after(shared, &saved);
+      return;
+    }
+    simulation.restore_state(saved, s.name + ": the saved gravity stage");
+    const sim::StageSpec& last = s.stages[shared - 1];
+    observer.stage_ends(simulation, last, simulation.results()[shared - 1]);
+    std::cerr << "  " << s.name << ": starts from the saved end of stage '" << last.name << "' ("
+              << fmt(simulation.results()[shared - 1].wall_time) << " s wall when computed)\n";
+  }
+
+  double run_wall() const { return run_wall_; }
+  std::vector<std::string> failures() const {
+    std::vector<std::string> f;
+    for (const auto& [file, r] : runs_)
+      if (!r->failed.empty()) f.push_back(file + ": " + r->failed);
+    return f;
+  }
+  bool quick() const { return quick_; }
+
+ private:
+  FramePainter& painter() {
+    if (!painter_) painter_ = std::make_unique<FramePainter>(960, 300);
+    return *painter_;
+  }
+
+  fs::path scenarios_, out_;
+  bool quick_;
+  std::map<std::string, std::unique_ptr<RunResult>> runs_;
+  std::map<std::uint64_t, std::string> gravity_states_;
+  std::unique_ptr<FramePainter> painter_;
+  double run_wall_ = 0;
+};
+
+}  // namespace app::gallery
