@@ -283,6 +283,62 @@ std::vector<Frame> load_frames(const Job& job) {
 
 }  // namespace
 
+namespace {
+
+// The run's colours: one range per stage (frames of one stage together),
+// or the one --range gives.
+std::map<std::string, Range> stage_ranges(const RenderOptions& o, const FieldStyle& style,
+                                          const std::vector<Frame>& frames) {
+  std::map<std::string, Range> ranges;
+  if (o.range) {
+    for (const Frame& f : frames) ranges[f.stage] = Range{o.range->first, o.range->second};
+    return ranges;
+  }
+  std::map<std::string, std::vector<const std::vector<float>*>> by_stage;
+  for (const Frame& f : frames) by_stage[f.stage].push_back(&f.values[0]);
+  for (const auto& [stage, list] : by_stage) ranges[stage] = field_range(style, list);
+  return ranges;
+}
+
+// Paints every state into job.out (one PNG, or numbered ones and a video).
+void paint_states(const Job& job, const RenderOptions& o, const std::vector<Frame>& frames,
+                  FramePainter& painter, render::Font* font, const FrameView& view) {
+  const FieldStyle style = field_style(job.field, job.scenario);
+  std::map<std::string, Range> ranges = stage_ranges(o, style, frames);
+  if (!job.out_is_file) {
+    fs::create_directories(job.out);
+    clear_numbered_frames(job.out);
+  } else if (job.out.has_parent_path()) {
+    fs::create_directories(job.out.parent_path());
+  }
+  for (std::size_t i = 0; i < frames.size(); ++i) {
+    const Frame& fr = frames[i];
+    const render::FrameSpec spec =
+        frame_spec(job.scenario, style, job.colour_map, ranges[fr.stage], fr, view);
+    const fs::path path = job.out_is_file ? job.out : job.out / numbered(int(i));
+    const render::Image& image = painter.paint(spec, fr, 0);
+    if (job.series.empty())
+      render::write_png(image, path.string());
+    else
+      render::write_png(
+          beside_series(*font, image, job.series, run_time_of(job.series, fr.stage, fr.time)),
+          path.string());
+  }
+  if (job.out_is_file) {
+    std::cout << job.out.string() << '\n';
+    return;
+  }
+  std::cout << job.out.string() << "/: " << counted(frames.size(), "frame") << '\n';
+  if (o.video) {
+    const render::VideoFiles v =
+        render::encode_video(job.out.string(), job.out.string(), field_name(job.field),
+                             video_options(job.scenario.output.frame_interval));
+    std::cout << v.mp4 << '\n' << v.gif << '\n';
+  }
+}
+
+}  // namespace
+
 int render_command(const RenderOptions& o) {
   Job job;
   std::vector<Frame> frames;
@@ -293,20 +349,9 @@ int render_command(const RenderOptions& o) {
     std::cerr << "error: " << e.what() << '\n';
     return kExitBadInput;
   }
-
-  const FieldStyle style = field_style(job.field, job.scenario);
-  // The run's colours: one range per stage (frames of one stage together).
-  std::map<std::string, Range> ranges;
-  if (o.range) {
-    for (const Frame& f : frames) ranges[f.stage] = Range{o.range->first, o.range->second};
-  } else {
-    std::map<std::string, std::vector<const std::vector<float>*>> by_stage;
-    for (const Frame& f : frames) by_stage[f.stage].push_back(&f.values[0]);
-    for (const auto& [stage, list] : by_stage) ranges[stage] = field_range(style, list);
-  }
-
   std::unique_ptr<FramePainter> painter;
   std::unique_ptr<render::Font> font;
+  FrameView view;
   try {
     painter = std::make_unique<FramePainter>(job.scenario.output.image_size[0],
                                              std::max(64, job.scenario.output.image_size[1]));
@@ -319,45 +364,14 @@ int render_command(const RenderOptions& o) {
   // (the run's own frames, when its output.vtk was "frames").
   Extent extent;
   for (const Frame& f : frames) extent.add(f);
-  FrameView view;
   try {
     view = frame_view(job.scenario, view_window(job.scenario, extent), painter->font());
   } catch (const std::exception& e) {
     std::cerr << "error: " << e.what() << '\n';
     return kExitBadInput;
   }
-
   try {
-    if (!job.out_is_file) {
-      fs::create_directories(job.out);
-      clear_numbered_frames(job.out);
-    } else if (job.out.has_parent_path()) {
-      fs::create_directories(job.out.parent_path());
-    }
-    for (std::size_t i = 0; i < frames.size(); ++i) {
-      const Frame& fr = frames[i];
-      const render::FrameSpec spec =
-          frame_spec(job.scenario, style, job.colour_map, ranges[fr.stage], fr, view);
-      const fs::path path = job.out_is_file ? job.out : job.out / numbered(int(i));
-      const render::Image& image = painter->paint(spec, fr, 0);
-      if (job.series.empty())
-        render::write_png(image, path.string());
-      else
-        render::write_png(beside_series(*font, image, job.series,
-                                        run_time_of(job.series, fr.stage, fr.time)),
-                          path.string());
-    }
-    if (job.out_is_file) {
-      std::cout << job.out.string() << '\n';
-    } else {
-      std::cout << job.out.string() << "/: " << counted(frames.size(), "frame") << '\n';
-      if (o.video) {
-        const render::VideoFiles v =
-            render::encode_video(job.out.string(), job.out.string(), field_name(job.field),
-                                 video_options(job.scenario.output.frame_interval));
-        std::cout << v.mp4 << '\n' << v.gif << '\n';
-      }
-    }
+    paint_states(job, o, frames, *painter, font.get(), view);
   } catch (const std::exception& e) {
     std::cerr << "error: " << e.what() << '\n';
     return kExitFailed;
