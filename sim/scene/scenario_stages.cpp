@@ -143,6 +143,74 @@ std::vector<StageSpec> parse_stages(const Node& node, const std::vector<Material
   return stages;
 }
 
+namespace {
+
+// output.frame_stages: gravity or dynamic stages, each once; all of them
+// when absent.
+std::vector<std::string> parse_frame_stages(const Node& node, const std::vector<StageSpec>& stages) {
+  std::vector<std::string> names;
+  if (!node.has("frame_stages")) {
+    for (const StageSpec& s : stages)
+      if (s.type != StageType::MaterialChange) names.push_back(s.name);
+    return names;
+  }
+  const Node list = node.at("frame_stages");
+  if (!list.value.is_array()) fail(list, "an array of stage names");
+  std::set<std::string> timed, listed;
+  for (const StageSpec& s : stages)
+    if (s.type != StageType::MaterialChange) timed.insert(s.name);
+  for (std::size_t i = 0; i < list.value.size(); ++i) {
+    const std::string name = string(list.at(i));
+    if (!timed.count(name)) fail(list.at(i), "the name of a gravity or dynamic stage");
+    if (!listed.insert(name).second) fail(list.at(i), "each stage once");
+    names.push_back(name);
+  }
+  return names;
+}
+
+// output.fields: each field once; displacement-x when absent.
+std::vector<std::string> parse_fields(const Node& node) {
+  if (!node.has("fields")) return {"displacement-x"};
+  const Node list = node.at("fields");
+  if (!list.value.is_array() || list.value.empty()) fail(list, "a non-empty array of fields");
+  std::vector<std::string> fields;
+  for (std::size_t i = 0; i < list.value.size(); ++i) {
+    const std::string f = one_of(list.at(i), {"displacement-x", "displacement-y",
+                                              "relative-yield", "stress-yy", "velocity",
+                                              "material"});
+    if (std::find(fields.begin(), fields.end(), f) != fields.end())
+      fail(list.at(i), "each field once");
+    fields.push_back(f);
+  }
+  return fields;
+}
+
+void parse_ranges_and_view(const Node& node, OutputSpec& o) {
+  if (node.has("ranges")) {
+    const Node ranges = node.at("ranges");
+    require_object(ranges, {"displacement-x", "displacement-y", "relative-yield", "stress-yy",
+                            "velocity"});
+    for (const auto& item : ranges.value.items()) {
+      const Node r = ranges.at(item.key());
+      if (!r.value.is_array() || r.value.size() != 2) fail(r, "[low, high], low < high");
+      const Vec2 lh = vec2(r);
+      if (!(lh[0] < lh[1])) fail(r, "[low, high], low < high");
+      o.ranges[item.key()] = {lh[0], lh[1]};
+    }
+  }
+  if (node.has("view")) {
+    const Node view = node.at("view");
+    require_object(view, {"min", "max"});
+    o.view_min = vec2(required(view, "min"));
+    o.view_max = vec2(required(view, "max"));
+    if (!(o.view_max[0] > o.view_min[0] && o.view_max[1] > o.view_min[1]))
+      fail(view.at("max"), "max > min in x and y");
+    o.has_view = true;
+  }
+}
+
+}  // namespace
+
 OutputSpec parse_output(const Node& node, const std::vector<StageSpec>& stages) {
   require_object(node, {"frame_interval", "frame_stages", "fields", "colour_map", "ranges",
                         "displacement_reference", "vtk", "vtk_interval", "image_size",
@@ -159,49 +227,8 @@ OutputSpec parse_output(const Node& node, const std::vector<StageSpec>& stages) 
     if (o.frame_interval > 0 && longest / o.frame_interval > kMaxFrames)
       fail(node.at("frame_interval"), "0 (no frames) or " + per_stage);
   }
-  if (node.has("frame_stages")) {
-    const Node list = node.at("frame_stages");
-    if (!list.value.is_array()) fail(list, "an array of stage names");
-    std::set<std::string> timed, listed;
-    for (const StageSpec& s : stages)
-      if (s.type != StageType::MaterialChange) timed.insert(s.name);
-    for (std::size_t i = 0; i < list.value.size(); ++i) {
-      const std::string name = string(list.at(i));
-      if (!timed.count(name)) fail(list.at(i), "the name of a gravity or dynamic stage");
-      if (!listed.insert(name).second) fail(list.at(i), "each stage once");
-      o.frame_stages.push_back(name);
-    }
-  } else {
-    for (const StageSpec& s : stages)
-      if (s.type != StageType::MaterialChange) o.frame_stages.push_back(s.name);
-  }
-  if (node.has("fields")) {
-    const Node list = node.at("fields");
-    if (!list.value.is_array() || list.value.empty()) fail(list, "a non-empty array of fields");
-    o.fields.clear();
-    for (std::size_t i = 0; i < list.value.size(); ++i) {
-      const std::string f = one_of(list.at(i), {"displacement-x", "displacement-y",
-                                                "relative-yield", "stress-yy", "velocity",
-                                                "material"});
-      if (std::find(o.fields.begin(), o.fields.end(), f) != o.fields.end())
-        fail(list.at(i), "each field once");
-      o.fields.push_back(f);
-    }
-  } else {
-    o.fields = {"displacement-x"};
-  }
-  if (node.has("ranges")) {
-    const Node ranges = node.at("ranges");
-    require_object(ranges, {"displacement-x", "displacement-y", "relative-yield", "stress-yy",
-                            "velocity"});
-    for (const auto& item : ranges.value.items()) {
-      const Node r = ranges.at(item.key());
-      if (!r.value.is_array() || r.value.size() != 2) fail(r, "[low, high], low < high");
-      const Vec2 lh = vec2(r);
-      if (!(lh[0] < lh[1])) fail(r, "[low, high], low < high");
-      o.ranges[item.key()] = {lh[0], lh[1]};
-    }
-  }
+  o.frame_stages = parse_frame_stages(node, stages);
+  o.fields = parse_fields(node);
   if (node.has("colour_map")) o.colour_map = one_of(node.at("colour_map"), {"viridis", "jet"});
   if (node.has("displacement_reference"))
     o.displacement_reference = one_of(node.at("displacement_reference"), {"initial", "stage-start"});
@@ -214,15 +241,7 @@ OutputSpec parse_output(const Node& node, const std::vector<StageSpec>& stages) 
     fail(node.at("vtk_interval"), "no vtk_interval unless vtk is \"interval\"");
   }
   if (node.has("image_size")) o.image_size = parse_image_size(node.at("image_size"));
-  if (node.has("view")) {
-    const Node view = node.at("view");
-    require_object(view, {"min", "max"});
-    o.view_min = vec2(required(view, "min"));
-    o.view_max = vec2(required(view, "max"));
-    if (!(o.view_max[0] > o.view_min[0] && o.view_max[1] > o.view_min[1]))
-      fail(view.at("max"), "max > min in x and y");
-    o.has_view = true;
-  }
+  parse_ranges_and_view(node, o);
   return o;
 }
 
