@@ -142,6 +142,10 @@ Sweep read_sweep(const fs::path& file, const fs::path& out, const std::set<int>&
   for (std::size_t k = 0; k < doc["axes"].size(); ++k) {
     const std::string where = f + ": axes[" + std::to_string(k) + "]";
     s.axes.push_back(read_axis(doc["axes"][k], where, base, s.base.string()));
+    for (std::size_t j = 0; j < k; ++j)
+      if (s.axes[j].path == s.axes[k].path)
+        throw SweepError(where + " (" + s.axes[k].path + "): also axes[" + std::to_string(j) +
+                         "]'s path (each path may be swept once)");
     count *= static_cast<long long>(s.axes.back().values.size());
     if (count > 9999) throw SweepError(f + ": axes: more than 9999 members");
   }
