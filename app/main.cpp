@@ -9,6 +9,7 @@
 
 #include "app/commands.hpp"
 #include "app/new_command.hpp"
+#include "app/sweep_command.hpp"
 
 namespace {
 
@@ -132,6 +133,9 @@ int main(int argc, char** argv) {
   app::NewOptions made;
   CLI::App* new_cmd = app::add_new_command(cli, made);
 
+  sweep::SweepOptions sweep;
+  CLI::App* sweep_cmd = app::add_sweep_command(cli, sweep);
+
   try {
     cli.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -149,5 +153,6 @@ int main(int argc, char** argv) {
   if (*gallery_cmd) return app::gallery_command(gallery);
   if (*validate_cmd) return app::validate_command(validate);
   if (*new_cmd) return app::new_command(made);
+  if (*sweep_cmd) return app::sweep_command(sweep);
   return app::kExitBadInput;
 }

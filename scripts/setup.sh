@@ -6,7 +6,7 @@ cd "$(dirname "$0")/.."
 
 packages=(build-essential cmake ninja-build pkg-config git libeigen3-dev nlohmann-json3-dev
           libcli11-dev libpng-dev zlib1g-dev libosmesa6-dev libfreetype-dev fonts-dejavu-core ffmpeg
-          libgtest-dev googletest)
+          libgtest-dev googletest libopenmpi-dev openmpi-bin)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -4,7 +4,7 @@
 #   cmake -DSOURCE_DIR=<repository> -P tests/architecture/layering.cmake
 # Parts, lowest first; a file may include its own part and any lower one.
 # render/ and sim/ are side by side: neither includes the other.
-set(parts sim/physics sim/scene sim/io sim/run render output validation gallery/src app)
+set(parts sim/physics sim/scene sim/io sim/run render output validation gallery/src sweep app)
 set(rank_sim/physics 0)
 set(rank_sim/scene 1)
 set(rank_sim/io 1)
@@ -13,6 +13,7 @@ set(rank_render 0)
 set(rank_output 3)
 set(rank_validation 4)
 set(rank_gallery/src 4)
+set(rank_sweep 4)
 set(rank_app 5)
 set(max_lines 400)
 

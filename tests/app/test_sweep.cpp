@@ -1,0 +1,162 @@
+// `landslide sweep` with the real binary: one and two MPI ranks give the same
+// sweep.csv, a resumed sweep runs only what is not finished, --paint paints
+// only the members named, and bad sweep files are refused (exit 2) before any
+// member runs, naming the member and the JSON path.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "run_binary.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+using apptest::landslide;
+using apptest::read_text;
+
+// The slope template at h = 2 m (524 points), 2 s of gravity, a 2 s slide.
+json base_scene() {
+  json s = json::parse(read_text(fs::path(LANDSLIDE_SOURCE_DIR) / "scenarios/templates/slope.json"));
+  s["grid"]["cell_size"] = 2;
+  s["stages"][0]["duration"] = 2;
+  s["stages"][2]["duration"] = 2;
+  s["stages"][2]["stop_at_rest"]["min_time"] = 0.5;
+  return s;
+}
+
+json friction_sweep() {
+  return {{"base", "base.json"},
+          {"axes", json::array({{{"path", "stages.1.set.friction_angle"},
+                                 {"values", {15, 20, 25}}}})}};
+}
+
+class Sweep : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("landslide-sweep-" + std::string(::testing::UnitTest::GetInstance()
+                                                 ->current_test_info()->name()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+    std::ofstream(dir_ / "base.json") << base_scene().dump(1);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  void write_sweep(const json& sweep) { std::ofstream(dir_ / "sweep.json") << sweep.dump(1); }
+  fs::path dir_;
+};
+
+std::vector<std::string> lines(const std::string& text) {
+  std::vector<std::string> out;
+  std::stringstream in(text);
+  for (std::string line; std::getline(in, line);) out.push_back(line);
+  return out;
+}
+
+TEST_F(Sweep, OneAndTwoRanksWriteTheSameCsv) {
+  if (!LANDSLIDE_WITH_MPI) GTEST_SKIP() << "built without MPI (CMake found none)";
+  if (std::string(LANDSLIDE_MPIRUN).empty() || !fs::exists(LANDSLIDE_MPIRUN))
+    GTEST_SKIP() << "no mpirun found (install openmpi-bin)";
+  write_sweep(friction_sweep());
+  const auto one = landslide("sweep sweep.json --out one --threads 1", dir_);
+  ASSERT_EQ(one.status, 0) << one.output;
+  const std::string two_ranks = "cd '" + dir_.string() + "' && '" LANDSLIDE_MPIRUN
+                                "' --oversubscribe --allow-run-as-root -np 2 '" LANDSLIDE_BINARY
+                                "' sweep sweep.json --out two --threads 1 > two.log 2>&1";
+  ASSERT_EQ(std::system(two_ranks.c_str()), 0) << read_text(dir_ / "two.log");
+  const std::string log = read_text(dir_ / "two.log");
+  EXPECT_NE(log.find("over 2 rank(s)"), std::string::npos) << log;
+  EXPECT_NE(log.find("on rank 1"), std::string::npos) << log;  // rank 1 ran a member
+  const std::string csv = read_text(dir_ / "one" / "sweep.csv");
+  EXPECT_EQ(csv, read_text(dir_ / "two" / "sweep.csv"));
+  const auto rows = lines(csv);
+  ASSERT_EQ(rows.size(), 4u) << csv;
+  EXPECT_EQ(rows[0].rfind("member,stages.1.set.friction_angle,status,runout_m", 0), 0u);
+  EXPECT_EQ(rows[1].rfind("0,15,finished,", 0), 0u) << rows[1];
+  EXPECT_NE(rows[1].substr(13), rows[3].substr(13));  // the friction angle moves the runout
+  // Each distinct gravity stage is computed once: one cached state.
+  int states = 0;
+  for (const auto& e : fs::directory_iterator(dir_ / "two" / "state-cache"))
+    states += e.path().extension() == ".state";
+  EXPECT_EQ(states, 1);
+  EXPECT_TRUE(fs::exists(dir_ / "two" / "sweep-stages.1.set.friction_angle.png"));
+}
+
+TEST_F(Sweep, ResumedSweepRunsOnlyUnfinishedMembers) {
+  write_sweep(friction_sweep());
+  const auto first = landslide("sweep sweep.json --out out --threads 1", dir_);
+  ASSERT_EQ(first.status, 0) << first.output;
+  const fs::path out = dir_ / "out";
+  const std::string summary0 = read_text(out / "members/0000/summary.json");
+  const std::string csv = read_text(out / "sweep.csv");
+  fs::remove(out / "members/0001/summary.json");  // as if killed during member 1
+  fs::remove(out / "sweep.csv");
+  const auto again = landslide("sweep sweep.json --out out --threads 1", dir_);
+  ASSERT_EQ(again.status, 0) << again.output;
+  EXPECT_NE(again.output.find("2 already finished"), std::string::npos) << again.output;
+  EXPECT_EQ(again.output.find("member 0 of"), std::string::npos) << again.output;
+  EXPECT_NE(again.output.find("member 1 of"), std::string::npos) << again.output;
+  // Its wall time would differ had it run again.
+  EXPECT_EQ(read_text(out / "members/0000/summary.json"), summary0);
+  EXPECT_EQ(read_text(out / "sweep.csv"), csv);
+  const json result = json::parse(read_text(out / "sweep.json"));
+  EXPECT_TRUE(result["members"][0]["wall_time_s"].is_number());
+}
+
+TEST_F(Sweep, PaintsOnlyTheMembersNamed) {
+  json sweep = friction_sweep();
+  sweep["axes"][0]["values"] = {15, 25};
+  write_sweep(sweep);
+  const auto r = landslide("sweep sweep.json --out out --threads 1 --paint 1", dir_);
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_FALSE(fs::exists(dir_ / "out/members/0000/frames"));
+  EXPECT_FALSE(fs::exists(dir_ / "out/members/0000/vtk"));
+  EXPECT_TRUE(fs::exists(dir_ / "out/members/0001/frames"));
+  EXPECT_TRUE(fs::exists(dir_ / "out/members/0001/vtk"));
+}
+
+struct BadCase {
+  const char* what;
+  json sweep;
+  std::vector<std::string> named;  // in the message
+};
+
+TEST_F(Sweep, BadSweepFilesAreRefusedBeforeAnyMemberRuns) {
+  auto axis = [](const std::string& path, json values) {
+    return json::array({{{"path", path}, {"values", values}}});
+  };
+  const std::vector<BadCase> cases = {
+      {"unknown key", {{"base", "base.json"}, {"axes", axis("grid.cell_size", {2})}, {"samples", 4}},
+       {"sweep.json.samples: unknown key"}},
+      {"unknown axis key",
+       {{"base", "base.json"},
+        {"axes", json::array({{{"path", "grid.cell_size"}, {"values", {2}}, {"step", 1}}})}},
+       {"axes[0].step: unknown key"}},
+      {"path the base lacks", {{"base", "base.json"}, {"axes", axis("materials.soil.nope", {1})}},
+       {"axes[0] (materials.soil.nope)", "has no materials.soil.nope"}},
+      {"index past the end", {{"base", "base.json"}, {"axes", axis("stages.7.duration", {1})}},
+       {"has no stages.7.duration"}},
+      {"value the scene refuses",
+       {{"base", "base.json"}, {"axes", axis("materials.soil.poisson_ratio", {0.3, 0.7})}},
+       {"member 1 (materials.soil.poisson_ratio = 0.7)", "poisson_ratio = 0.7"}},
+      {"one path twice",
+       {{"base", "base.json"},
+        {"axes", json::array({{{"path", "grid.cell_size"}, {"values", {2}}},
+                              {{"path", "grid.cell_size"}, {"values", {3}}}})}},
+       {"axes[1] (grid.cell_size): also axes[0]'s path"}},
+      {"empty axis", {{"base", "base.json"}, {"axes", axis("grid.cell_size", json::array())}},
+       {"axes[0] (grid.cell_size).values: empty"}},
+  };
+  for (const BadCase& c : cases) {
+    write_sweep(c.sweep);
+    const auto r = landslide("sweep sweep.json --out out --threads 1", dir_);
+    EXPECT_EQ(r.status, 2) << c.what << ": " << r.output;
+    for (const std::string& n : c.named)
+      EXPECT_NE(r.output.find(n), std::string::npos) << c.what << ": " << r.output;
+    EXPECT_FALSE(fs::exists(dir_ / "out")) << c.what << ": a member ran";
+  }
+}
+
+}  // namespace
