@@ -56,7 +56,8 @@ struct Estimate {
 
 // Point-steps per second of the GIMP step on this machine with the present
 // OpenMP threads: a built-in 7,680-point soil block stepped for about 0.15 s
-// of wall time (figures vary from run to run; never assert them).
+// of wall time (figures vary from run to run; never assert them). Measured
+// once per thread count in a process (a sweep's members share it).
 double calibrate_step_rate();
 
 // The estimate for `sim` as it stands (fresh, or restored), whose frames are
