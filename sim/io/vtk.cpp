@@ -57,6 +57,12 @@ void write_vtu(const std::string& path, const World& w, double time) {
                [&](std::size_t i, int) { return p.volume(i); });
     data_array(out, "Int32", "material", 1, n, [&](std::size_t i, int) { return p.material[i]; });
     data_array(out, "UInt8", "yielded", 1, n, [&](std::size_t i, int) { return p.yielded[i]; });
+    if (w.strength.active()) {  // a random field's strength, point by point
+      data_array(out, "Float64", "cohesion", 1, n,
+                 [&](std::size_t i, int) { return w.strength.cohesion[i]; });
+      data_array(out, "Float64", "friction_angle", 1, n,
+                 [&](std::size_t i, int) { return w.strength.friction_angle[i]; });
+    }
     out << "</PointData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
   });
 }
@@ -131,6 +137,10 @@ PointState read_vtu(const std::string& path) {
   split("volume", 1, {&s.volume});
   for (const double v : read_array(text, path, "material", n)) s.material.push_back(int(v));
   for (const double v : read_array(text, path, "yielded", n)) s.yielded.push_back(int(v));
+  if (text.find("Name=\"cohesion\"") != std::string::npos) {
+    split("cohesion", 1, {&s.cohesion});
+    split("friction_angle", 1, {&s.friction_angle});
+  }
   return s;
 }
 

@@ -57,6 +57,10 @@ MohrCoulomb MohrCoulomb::make(double E, double nu, double c, double phi, double 
   const double lambda = E * nu / ((1 + nu) * (1 - 2 * nu)), shear = E / (2 * (1 + nu));
   const double sin_psi = std::sin(psi);
   mc.cohesion = c;
+  mc.friction_angle = phi;
+  mc.dilation_angle = psi;
+  mc.youngs_modulus = E;
+  mc.poisson_ratio = nu;
   mc.sin_phi = std::sin(phi);
   mc.cos_phi = std::cos(phi);
   // Eq. (20) times 2 / (1 - sin phi) gives f = k s1 - s3 - sigma_c; Eq. (23)

@@ -31,12 +31,19 @@ struct MohrCoulomb {
   Principal3 edge1{}, edge2{};    // l1 = (1, 1, k) (s1 = s2), l2 = (1, k, k) (s2 = s3)
   Principal3 side1{}, side2{};    // r_p x l1, r_p x l2: p_I, p_II bound the plane region
   Principal3 project1{}, project2{};  // r_i / (r_i . l_i): edge parameter t_i from s_B - s_a
+  // What it was made from, read only to show it or to make another surface
+  // of the same soil (sim/physics/point_strength.hpp, painted fields).
+  double friction_angle = 0, dilation_angle = 0, youngs_modulus = 0, poisson_ratio = 0;
 
   // Angles in radians: friction in (0, pi/2), dilation in [0, friction];
   // cohesion >= 0 (0 puts the apex at the origin); E > 0, nu in (-1, 0.5).
   // Throws std::invalid_argument otherwise.
   static MohrCoulomb make(double youngs_modulus, double poisson_ratio, double cohesion,
                           double friction_angle_rad, double dilation_angle_rad);
+  // The same soil (stiffness, dilation) with another cohesion and friction angle.
+  MohrCoulomb with_strength(double cohesion, double friction_angle_rad) const {
+    return make(youngs_modulus, poisson_ratio, cohesion, friction_angle_rad, dilation_angle);
+  }
 };
 
 // Principal decomposition of a plane-strain stress: the three values sorted,

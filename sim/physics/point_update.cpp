@@ -14,7 +14,10 @@ namespace sim {
 namespace {
 
 // The stress update of point p (Eqs. 31, 24, 21-23, 25); returns its stress
-// work over the step (Eq. 3).
+// work over the step (Eq. 3). kOwnStrength: the point's own Mohr-Coulomb
+// surface (a random field, sim/physics/point_strength.hpp), chosen once per
+// step so a scene without a field reads nothing more.
+template <bool kOwnStrength>
 double update_point_stress(World& w, int p, double dt) {
   Particles& pts = w.points;
   const Grid& g = w.grid;
@@ -38,8 +41,10 @@ double update_point_stress(World& w, int p, double dt) {
   Stress s = old;
   jaumann_rotate(s, 0.5 * dt * (Lxy - Lyx));  // Eq. (24)
   elastic_predictor(s, de, mat);              // Eq. (21)
-  if (mat.plastic)                            // Eqs. (20)-(23)
-    pts.yielded[p] = mohr_coulomb_return(mat.mohr_coulomb, s) != ReturnRegion::Elastic;
+  if (mat.plastic) {  // Eqs. (20)-(23)
+    const MohrCoulomb& mc = kOwnStrength ? w.strength.mohr_coulomb[p] : mat.mohr_coulomb;
+    pts.yielded[p] = mohr_coulomb_return(mc, s) != ReturnRegion::Elastic;
+  }
   pts.density[p] *= std::exp(-(de.xx + de.yy));  // Eq. (25)
   // Torn or loosened soil below its critical density carries no stress
   // (Dunatunga & Kamrin 2015): it counts as yielded, flowing freely.
@@ -71,28 +76,42 @@ void scatter_point_force(World& w, int p, const Vec2& gravity) {
   }
 }
 
-}  // namespace
-
-double update_stress(World& w, double dt) {
+template <bool kOwnStrength>
+double update_stress_of_all(World& w, double dt) {
   double work = 0;
   for (std::size_t p = 0; p < w.points.size(); ++p)
-    work += update_point_stress(w, static_cast<int>(p), dt);
+    work += update_point_stress<kOwnStrength>(w, static_cast<int>(p), dt);
   return work;
 }
 
 // One pass over the points for both: a point's new stress goes to its nodes
 // while its stencil and stress are still in cache. The nodal velocities the
 // stress update reads do not change in this phase.
-void update_stress_and_forces(World& w, const StepInput& in) {
+template <bool kOwnStrength>
+void update_stress_and_forces_of_bands(World& w, const StepInput& in) {
   scatter_own_bands(w, [&](int band) {
     double work = 0;
     for (int s = w.band_start[band]; s < w.band_start[band + 1]; ++s) {
       const int p = w.order[s];
-      work += update_point_stress(w, p, in.dt);
+      work += update_point_stress<kOwnStrength>(w, p, in.dt);
       scatter_point_force(w, p, in.gravity);
     }
     w.band_sums[band * kBandSums + kInternalWork] = work;
   });
+}
+
+}  // namespace
+
+double update_stress(World& w, double dt) {
+  return w.strength.active() ? update_stress_of_all<true>(w, dt)
+                             : update_stress_of_all<false>(w, dt);
+}
+
+void update_stress_and_forces(World& w, const StepInput& in) {
+  if (w.strength.active())
+    update_stress_and_forces_of_bands<true>(w, in);
+  else
+    update_stress_and_forces_of_bands<false>(w, in);
 }
 
 void grid_to_points(World& w, const StepInput& in) {

@@ -10,6 +10,7 @@
 #include "sim/physics/grid.hpp"
 #include "sim/physics/material.hpp"
 #include "sim/physics/particles.hpp"
+#include "sim/physics/point_strength.hpp"
 #include "sim/physics/spec.hpp"
 
 namespace sim {
@@ -28,6 +29,7 @@ struct World {
   TransferScheme transfer = TransferScheme::Flip;
   std::vector<MaterialSpec> material_specs;  // as they stand now (material changes edit them)
   std::vector<MaterialConstants> materials;
+  PointStrength strength;  // per point, where a random field set it; empty otherwise
 
   // Scratch, rebuilt every step.
   std::vector<Stencil> stencils;  // per point

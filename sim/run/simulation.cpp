@@ -5,6 +5,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "sim/scene/random_field.hpp"
 #include "sim/scene/seed.hpp"
 #include "sim/run/watchdog.hpp"
 
@@ -60,9 +61,16 @@ void Simulation::finish_stage(const StageSpec& stage, const StageResult& r, Obse
 void Simulation::change_materials(const StageSpec& stage) {
   // The trigger of the paper (Section 7.1): properties change at once, the
   // stresses stay and are returned to the new surface by the next step.
+  // A random field gives each point of the material its own value
+  // (sim/physics/point_strength.hpp); the spec keeps the field's mean.
   for (const MaterialChange& c : stage.changes) {
     apply_material_change(world_.material_specs[c.material], c.property, c.value);
     world_.materials[c.material] = make_material_constants(world_.material_specs[c.material]);
+    if (c.has_field)
+      set_point_strength(world_, c.material, c.property,
+                         field_at_points(c.field, scenario_, world_.points, c.material));
+    else
+      follow_material_change(world_, c.material, c.property);
   }
 }
 

@@ -15,7 +15,7 @@ namespace {
 
 // "LSSTATE" and a format version; bump the version whenever the layout below
 // changes, so an old file is refused rather than misread.
-constexpr std::uint64_t kMagic = 0x4c53535441544502ULL;
+constexpr std::uint64_t kMagic = 0x4c53535441544503ULL;  // 03: per-point strength
 // Read back as another number on a machine of the other byte order.
 constexpr std::uint64_t kByteOrder = 0x0102030405060708ULL;
 
@@ -138,6 +138,11 @@ std::uint64_t stage_prefix_key(const Scenario& s, std::size_t stages) {
       w.put(c.material);
       w.put_string(c.property);
       w.put(c.value);
+      if (!c.has_field) continue;  // keys of scenes without fields stay as they were
+      const RandomFieldSpec& f = c.field;
+      w.put(f.distribution);
+      for (double v : {f.mean, f.cov, f.lower, f.upper, f.theta_x, f.theta_y}) w.put(v);
+      w.put(f.seed);
     }
     w.put(stage_is_painted(s, st));
   }
@@ -189,6 +194,12 @@ std::string Simulation::save_state(std::string buffer) const {
   w.put_vector(pts.yielded);
   if (world_.transfer == TransferScheme::Apic)
     for (const std::vector<double>* a : {&pts.cxx, &pts.cxy, &pts.cyx, &pts.cyy}) w.put_vector(*a);
+  // Per-point strength of a random field; the returns are rebuilt from it.
+  w.put(world_.strength.active());
+  if (world_.strength.active()) {
+    w.put_vector(world_.strength.cohesion);
+    w.put_vector(world_.strength.friction_angle);
+  }
   return w.take();
 }
 
@@ -233,6 +244,14 @@ void Simulation::restore_state(const std::string& bytes, const std::string& labe
   if (world_.transfer == TransferScheme::Apic)
     for (std::vector<double>* a : {&pts.cxx, &pts.cxy, &pts.cyx, &pts.cyy})
       *a = rd.get_vector<double>(n, "an affine velocity array");
+  PointStrength& strength = world_.strength;
+  strength = PointStrength{};
+  if (rd.get<bool>()) {
+    strength.cohesion = rd.get_vector<double>(n, "the per-point cohesion");
+    strength.friction_angle = rd.get_vector<double>(n, "the per-point friction angle");
+    strength.mohr_coulomb.assign(n, MohrCoulomb{});
+    rebuild_point_strength(world_);
+  }
   if (!rd.at_end()) rd.fail("bytes after the end of the state");
 }
 

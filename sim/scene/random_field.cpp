@@ -176,4 +176,31 @@ double sample_nearest(const FieldLattice& lattice, const std::vector<double>& va
   return values[static_cast<std::size_t>(i) + static_cast<std::size_t>(lattice.nx) * j];
 }
 
+FieldLattice field_lattice(const Scenario& s) {
+  const double spacing = s.cell_size / s.points_per_cell;
+  FieldLattice l;
+  l.nx = static_cast<int>(std::lround(std::ceil((s.domain_max[0] - s.domain_min[0]) / spacing)));
+  l.ny = static_cast<int>(std::lround(std::ceil((s.domain_max[1] - s.domain_min[1]) / spacing)));
+  l.x0 = s.domain_min[0] + 0.5 * spacing;
+  l.y0 = s.domain_min[1] + 0.5 * spacing;
+  l.dx = l.dy = spacing;
+  return l;
+}
+
+std::vector<double> field_at_points(const RandomFieldSpec& field, const Scenario& s,
+                                    const Particles& points, int material) {
+  const FieldLattice lattice = field_lattice(s);
+  const GaussianFieldGenerator generator(lattice, {field.theta_x, field.theta_y});
+  const std::vector<double> g = generator.standard_field(field.seed);
+  const std::vector<double> values =
+      field.distribution == RandomFieldSpec::Distribution::LogNormal
+          ? to_lognormal(g, {field.mean, field.cov})
+          : to_truncated_normal(g, {field.mean, field.cov, field.lower, field.upper});
+  std::vector<double> out(points.size(), 0.0);
+  for (std::size_t p = 0; p < points.size(); ++p)
+    if (points.material[p] == material)
+      out[p] = sample_nearest(lattice, values, points.x0[p], points.y0[p]);
+  return out;
+}
+
 }  // namespace sim

@@ -1,5 +1,5 @@
-// Spatially correlated random fields of soil strength (issue 16; not yet read
-// from scenes). A stationary standard Gaussian field g with the separable
+// Spatially correlated random fields of soil strength (issue 16), set by a
+// material-change stage (scenarios/README.md, "Random fields"). A stationary standard Gaussian field g with the separable
 // Markov correlation of Fenton and Griffiths (2008, "Risk Assessment in
 // Geotechnical Engineering", Wiley, Ch. 3):
 //   rho(dx, dy) = exp(-2|dx|/theta_x - 2|dy|/theta_y),
@@ -16,6 +16,9 @@
 #include <Eigen/Dense>
 #include <cstdint>
 #include <vector>
+
+#include "sim/physics/particles.hpp"
+#include "sim/scene/scenario.hpp"
 
 namespace sim {
 
@@ -98,5 +101,17 @@ Moments truncated_normal_moments(const TruncatedNormal& d);
 // Throws std::invalid_argument for a point more than half a spacing outside.
 double sample_nearest(const FieldLattice& lattice, const std::vector<double>& values, double x,
                       double y);
+
+// The lattice a scene's fields are drawn on: its nodes are the sub-cell
+// centres where points are seeded (spacing cell_size / points_per_cell) over
+// the whole domain, so each point starts on a node of its own.
+FieldLattice field_lattice(const Scenario& s);
+
+// The field's value for each point of `material`, at the lattice node
+// nearest its initial position (x0, y0): the field moves with the soil.
+// Entries of other points are 0. Throws std::invalid_argument (parameters the
+// scene reader lets through are never refused).
+std::vector<double> field_at_points(const RandomFieldSpec& field, const Scenario& s,
+                                    const Particles& points, int material);
 
 }  // namespace sim

@@ -39,6 +39,10 @@ MaterialSpec parse_material(const Node& node, const std::string& name) {
   m.youngs_modulus = positive(required(node, "youngs_modulus", need));
   m.poisson_ratio = number(required(node, "poisson_ratio", need), 0, Bound::Closed, 0.5, Bound::Open);
   if (m.model == MaterialModel::MohrCoulomb) {
+    for (const char* key : {"cohesion", "friction_angle"})
+      if (node.has(key) && node.at(key).value.is_object())
+        fail(node.at(key), "a number (a random field of it is set by a material-change "
+                           "stage's \"set\", scenarios/README.md \"Random fields\")");
     m.cohesion = non_negative(required(node, "cohesion", need));
     // Compared in degrees as given: a round trip through radians could put
     // the bound a hair below an equal dilation angle.
@@ -245,7 +249,7 @@ Scenario parse_document(const Json& doc, const std::string& file) {
   if (root.has("transfer"))
     s.transfer = one_of(root.at("transfer"), {"flip", "apic"}) == "apic" ? TransferScheme::Apic
                                                                         : TransferScheme::Flip;
-  s.stages = parse_stages(required(root, "stages"), s.materials);
+  s.stages = parse_stages(required(root, "stages"), s);
   s.output = parse_output(required(root, "output"), s.stages);
   return s;
 }

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdint>
 #include <map>
 #include <stdexcept>
 #include <string>
@@ -37,10 +38,26 @@ struct RestCriterion {
   double min_time = 0;
 };
 
+// A spatially correlated random value of cohesion or friction angle, set by
+// a material-change stage in place of a number (scenarios/README.md, "Random
+// fields"; drawn by sim/scene/random_field.hpp on the lattice of the initial
+// point spacing, each point taking its nearest node at its initial position).
+struct RandomFieldSpec {
+  enum class Distribution { LogNormal, TruncatedNormal };
+  Distribution distribution = Distribution::LogNormal;
+  double mean = 0;  // SI (rad for angles): of the log-normal, of the parent normal if truncated
+  double cov = 0;   // coefficient of variation, standard deviation / |mean|
+  double lower = 0, upper = 0;      // truncated-normal only, SI
+  double theta_x = 0, theta_y = 0;  // scales of fluctuation, m (Fenton & Griffiths 2008)
+  std::uint64_t seed = 0;           // the field is set by it alone
+};
+
 struct MaterialChange {
   int material = -1;      // index into Scenario::materials
   std::string property;   // "cohesion", "friction_angle", ...
-  double value = 0;       // SI, radians for angles
+  double value = 0;       // SI, radians for angles; a field's mean
+  bool has_field = false; // cohesion / friction_angle drawn from `field` point by point
+  RandomFieldSpec field;
 };
 
 enum class StageType { Gravity, MaterialChange, Dynamic };

@@ -1,6 +1,7 @@
 // Pieces of the scenario reader that live in their own file.
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "sim/scene/scenario.hpp"
@@ -8,8 +9,11 @@
 
 namespace sim {
 
-std::vector<StageSpec> parse_stages(const scenario_json::Node& node,
-                                    const std::vector<MaterialSpec>& materials);
+// `s` holds everything read before the stages (grid, materials).
+std::vector<StageSpec> parse_stages(const scenario_json::Node& node, const Scenario& s);
+// A random field in place of material m's `property` (scenario_fields.cpp).
+RandomFieldSpec parse_random_field(const scenario_json::Node& value, const std::string& property,
+                                   const MaterialSpec& m, const Scenario& s);
 // The index of the material `name` names; fails listing the defined ones.
 int material_index(const scenario_json::Node& name, const std::vector<MaterialSpec>& materials);
 OutputSpec parse_output(const scenario_json::Node& node, const std::vector<StageSpec>& stages);

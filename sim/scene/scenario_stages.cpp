@@ -41,12 +41,45 @@ int material_index(const Node& name, const std::vector<MaterialSpec>& materials)
 
 namespace {
 
-// Applies a material-change stage to `materials` (the state at that stage),
-// so later stages and the dilation <= friction rule see the changed values.
-void parse_changes(const Node& node, StageSpec& stage, std::vector<MaterialSpec>& materials) {
+// The materials as the stages so far leave them, and the lowest friction
+// angle any point of each can have (a random field's lower bound).
+struct MaterialsNow {
+  std::vector<MaterialSpec> specs;
+  std::vector<double> lowest_friction;
+};
+
+// A cohesion or friction angle given as {"random_field": ...} (scenario_fields.cpp).
+bool is_field(const Node& v, const std::string& property) {
+  return v.value.is_object() && (property == "cohesion" || property == "friction_angle");
+}
+
+void parse_change(const Node& v, MaterialChange& c, MaterialSpec& m, double& lowest_friction,
+                  const Scenario& s) {
+  if (is_field(v, c.property)) {
+    c.has_field = true;
+    c.field = parse_random_field(v, c.property, m, s);
+    c.value = c.field.mean;
+    if (c.property == "cohesion") m.cohesion = c.value;
+    if (c.property == "friction_angle") m.friction_angle = c.value, lowest_friction = c.field.lower;
+    return;
+  }
+  if (c.property == "cohesion") c.value = m.cohesion = non_negative(v);
+  if (c.property == "youngs_modulus") c.value = m.youngs_modulus = positive(v);
+  if (c.property == "poisson_ratio")
+    c.value = m.poisson_ratio = number(v, 0, Bound::Closed, 0.5, Bound::Open);
+  if (c.property == "friction_angle")
+    c.value = lowest_friction = m.friction_angle =
+        number(v, 0, Bound::Open, 90, Bound::Open) * kPi / 180;
+  if (c.property == "dilation_angle")
+    c.value = m.dilation_angle = number(v, 0, Bound::Closed, 90, Bound::Open) * kPi / 180;
+}
+
+// Applies a material-change stage to the materials as they stand at that
+// stage, so later stages and the dilation <= friction rule see the changes.
+void parse_changes(const Node& node, StageSpec& stage, MaterialsNow& now, const Scenario& s) {
   const Node name = required(node, "material", "required for a material-change stage");
-  const int index = material_index(name, materials);
-  MaterialSpec& m = materials[index];
+  const int index = material_index(name, now.specs);
+  MaterialSpec& m = now.specs[index];
   const Node set = required(node, "set", "required for a material-change stage");
   if (m.model == MaterialModel::MohrCoulomb)
     require_object(set, {"cohesion", "friction_angle", "dilation_angle", "youngs_modulus",
@@ -55,31 +88,27 @@ void parse_changes(const Node& node, StageSpec& stage, std::vector<MaterialSpec>
     require_object(set, {"youngs_modulus", "poisson_ratio"},
                    "linear-elastic material \"" + m.name + "\"");
   if (set.value.empty()) fail(set, "at least one property to change");
-  for (const auto& item : set.value.items()) {  // nlohmann orders keys alphabetically
-    const Node v = set.at(item.key());
+  // nlohmann orders keys alphabetically: dilation_angle is read before
+  // friction_angle, so a field's bounds are checked against the new dilation.
+  for (const auto& item : set.value.items()) {
     MaterialChange c;
     c.material = index;
     c.property = item.key();
-    if (c.property == "cohesion") c.value = m.cohesion = non_negative(v);
-    if (c.property == "youngs_modulus") c.value = m.youngs_modulus = positive(v);
-    if (c.property == "poisson_ratio")
-      c.value = m.poisson_ratio = number(v, 0, Bound::Closed, 0.5, Bound::Open);
-    if (c.property == "friction_angle")
-      c.value = m.friction_angle = number(v, 0, Bound::Open, 90, Bound::Open) * kPi / 180;
-    if (c.property == "dilation_angle")
-      c.value = m.dilation_angle = number(v, 0, Bound::Closed, 90, Bound::Open) * kPi / 180;
+    parse_change(set.at(item.key()), c, m, now.lowest_friction[index], s);
     stage.changes.push_back(c);
   }
-  if (m.dilation_angle > m.friction_angle) {
+  if (m.dilation_angle > now.lowest_friction[index]) {
     std::ostringstream msg;
     msg << node.path << " (" << stage.name << ") leaves materials." << m.name
         << " with dilation_angle " << m.dilation_angle * 180 / kPi << " > friction_angle "
-        << m.friction_angle * 180 / kPi << ": expected dilation_angle <= friction_angle";
+        << now.lowest_friction[index] * 180 / kPi
+        << (now.lowest_friction[index] == m.friction_angle ? "" : " (its field's lower bound)")
+        << ": expected dilation_angle <= friction_angle";
     fail_at(node.file, msg.str());
   }
 }
 
-StageSpec parse_stage(const Node& node, std::vector<MaterialSpec>& materials) {
+StageSpec parse_stage(const Node& node, MaterialsNow& now, const Scenario& scenario) {
   StageSpec s;
   if (!node.value.is_object()) fail(node, "an object");
   s.name = string(required(node, "name"));
@@ -90,7 +119,7 @@ StageSpec parse_stage(const Node& node, std::vector<MaterialSpec>& materials) {
   if (kind == "material-change") {
     s.type = StageType::MaterialChange;
     require_object(node, {"name", "type", "material", "set"}, "a material-change stage");
-    parse_changes(node, s, materials);
+    parse_changes(node, s, now, scenario);
     return s;
   }
   s.type = kind == "gravity" ? StageType::Gravity : StageType::Dynamic;
@@ -128,13 +157,14 @@ std::array<int, 2> parse_image_size(const Node& size) {
 
 }  // namespace
 
-std::vector<StageSpec> parse_stages(const Node& node, const std::vector<MaterialSpec>& materials) {
+std::vector<StageSpec> parse_stages(const Node& node, const Scenario& scenario) {
   if (!node.value.is_array() || node.value.empty()) fail(node, "an array of stages (at least one)");
-  std::vector<MaterialSpec> current = materials;
+  MaterialsNow now{scenario.materials, {}};
+  for (const MaterialSpec& m : scenario.materials) now.lowest_friction.push_back(m.friction_angle);
   std::vector<StageSpec> stages;
   std::map<std::string, std::size_t> names;
   for (std::size_t i = 0; i < node.value.size(); ++i) {
-    stages.push_back(parse_stage(node.at(i), current));
+    stages.push_back(parse_stage(node.at(i), now, scenario));
     const auto [seen, fresh] = names.emplace(stages[i].name, i);
     if (!fresh)
       fail(node.at(i).at("name"),
@@ -177,7 +207,7 @@ std::vector<std::string> parse_fields(const Node& node) {
   for (std::size_t i = 0; i < list.value.size(); ++i) {
     const std::string f = one_of(list.at(i), {"displacement-x", "displacement-y",
                                               "relative-yield", "stress-yy", "velocity",
-                                              "material"});
+                                              "material", "cohesion", "friction-angle"});
     if (std::find(fields.begin(), fields.end(), f) != fields.end())
       fail(list.at(i), "each field once");
     fields.push_back(f);
@@ -189,7 +219,7 @@ void parse_ranges_and_view(const Node& node, OutputSpec& o) {
   if (node.has("ranges")) {
     const Node ranges = node.at("ranges");
     require_object(ranges, {"displacement-x", "displacement-y", "relative-yield", "stress-yy",
-                            "velocity"});
+                            "velocity", "cohesion", "friction-angle"});
     for (const auto& item : ranges.value.items()) {
       const Node r = ranges.at(item.key());
       if (!r.value.is_array() || r.value.size() != 2) fail(r, "[low, high], low < high");

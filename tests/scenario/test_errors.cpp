@@ -100,7 +100,7 @@ const std::vector<BadCase>& bad_cases() {
       {"RangeOfCategoricalField",
        [](Json& d) { d["output"]["ranges"] = {{"material", {0, 1}}}; },
        {"output.ranges.material: unknown key (allowed: displacement-x, displacement-y, "
-        "relative-yield, stress-yy, velocity)"}},
+        "relative-yield, stress-yy, velocity, cohesion, friction-angle)"}},
       {"RangeNotANumber", [](Json& d) { d["output"]["ranges"] = {{"stress-yy", {"-1e5", 0}}}; },
        {"output.ranges.stress-yy[0] = \"-1e5\": expected a finite number"}},
       {"GravityOfBooleans", [](Json& d) { d["gravity"] = {true, -9.81}; },

@@ -164,3 +164,36 @@ TEST(Resume, TruncatedOrForeignBytesAreRefused) {
 }
 
 }  // namespace
+
+namespace {
+
+// The trigger of short_slope() draws the friction angle from a random field.
+sim::Scenario short_slope_with_field(std::uint64_t seed) {
+  sim::Scenario s = short_slope();
+  for (sim::MaterialChange& c : s.stages[1].changes)
+    if (c.property == "friction_angle") {
+      c.has_field = true;
+      c.field.distribution = sim::RandomFieldSpec::Distribution::TruncatedNormal;
+      c.field.mean = c.value;
+      c.field.cov = 0.2;
+      c.field.lower = 0.5 * c.value;
+      c.field.upper = 1.5 * c.value;
+      c.field.theta_x = 10;
+      c.field.theta_y = 2;
+      c.field.seed = seed;
+    }
+  return s;
+}
+
+TEST(Resume, MidSlideWithARandomFieldGivesTheSameFinalState) {
+  const sim::Scenario s = short_slope_with_field(11);
+  Recorder stopper;
+  stopper.stop_at = 1.61;  // the per-point strength travels in the state
+  expect_same(run_through(s), run_stopped(s, stopper));
+  // Another seed is another scene after the trigger, the same one before it.
+  const sim::Scenario other = short_slope_with_field(12);
+  EXPECT_EQ(sim::stage_prefix_key(s, 1), sim::stage_prefix_key(other, 1));
+  EXPECT_NE(sim::stage_prefix_key(s, 2), sim::stage_prefix_key(other, 2));
+}
+
+}  // namespace

@@ -1,0 +1,71 @@
+#include "sim/physics/point_strength.hpp"
+
+#include "sim/physics/world.hpp"
+
+namespace sim {
+
+namespace {
+
+// First field of the run: every point starts from its material's values.
+void start_point_strength(World& w) {
+  PointStrength& s = w.strength;
+  const std::size_t n = w.points.size();
+  s.cohesion.assign(n, 0.0);
+  s.friction_angle.assign(n, 0.0);
+  s.mohr_coulomb.assign(n, MohrCoulomb{});
+  for (std::size_t p = 0; p < n; ++p) {
+    const MaterialSpec& m = w.material_specs[w.points.material[p]];
+    if (m.model != MaterialModel::MohrCoulomb) continue;
+    s.cohesion[p] = m.cohesion;
+    s.friction_angle[p] = m.friction_angle;
+    s.mohr_coulomb[p] = w.materials[w.points.material[p]].mohr_coulomb;
+  }
+}
+
+void rebuild_material(World& w, int material) {
+  PointStrength& s = w.strength;
+  const MaterialConstants& m = w.materials[material];
+  if (!m.plastic) return;
+  for (std::size_t p = 0; p < w.points.size(); ++p)
+    if (w.points.material[p] == material)
+      s.mohr_coulomb[p] = m.mohr_coulomb.with_strength(s.cohesion[p], s.friction_angle[p]);
+}
+
+std::vector<double>& values_of(PointStrength& s, const std::string& property) {
+  return property == "cohesion" ? s.cohesion : s.friction_angle;
+}
+
+}  // namespace
+
+void set_point_strength(World& w, int material, const std::string& property,
+                        const std::vector<double>& values) {
+  if (!w.strength.active()) start_point_strength(w);
+  std::vector<double>& own = values_of(w.strength, property);
+  for (std::size_t p = 0; p < w.points.size(); ++p)
+    if (w.points.material[p] == material) own[p] = values[p];
+  rebuild_material(w, material);
+}
+
+void follow_material_change(World& w, int material, const std::string& property) {
+  if (!w.strength.active()) return;
+  const MaterialSpec& m = w.material_specs[material];
+  if (property == "cohesion" || property == "friction_angle") {
+    std::vector<double>& own = values_of(w.strength, property);
+    const double value = property == "cohesion" ? m.cohesion : m.friction_angle;
+    for (std::size_t p = 0; p < w.points.size(); ++p)
+      if (w.points.material[p] == material) own[p] = value;
+  }
+  rebuild_material(w, material);
+}
+
+void rebuild_point_strength(World& w) {
+  if (!w.strength.active()) return;
+  for (std::size_t m = 0; m < w.material_specs.size(); ++m) rebuild_material(w, static_cast<int>(m));
+}
+
+const MohrCoulomb& point_mohr_coulomb(const World& w, std::size_t p) {
+  return w.strength.active() ? w.strength.mohr_coulomb[p]
+                             : w.materials[w.points.material[p]].mohr_coulomb;
+}
+
+}  // namespace sim
