@@ -88,7 +88,7 @@ int main(int argc, char** argv) {
       ->required();
   render_cmd->add_option("--field", render.field,
                          "displacement-x | displacement-y | relative-yield | stress-yy | "
-                         "velocity | material")
+                         "velocity | material | cohesion | friction-angle")
       ->required();
   render_cmd->add_option("--colour-map", render.colour_map,
                          "jet | viridis (default: the scenario's)");

@@ -20,6 +20,7 @@ constexpr FieldInfo kFields[] = {
     {Field::DisplacementX, "displacement-x"}, {Field::DisplacementY, "displacement-y"},
     {Field::RelativeYield, "relative-yield"}, {Field::StressYY, "stress-yy"},
     {Field::Velocity, "velocity"},            {Field::Material, "material"},
+    {Field::Cohesion, "cohesion"},            {Field::FrictionAngle, "friction-angle"},
 };
 
 }  // namespace
@@ -80,6 +81,16 @@ FieldStyle field_style(Field f, const sim::Scenario& scenario) {
       s.label = "speed |v|";
       s.unit = "m/s";
       break;
+    case Field::Cohesion:
+      s.title = "cohesion";
+      s.label = "cohesion c";
+      s.unit = "kPa";
+      break;
+    case Field::FrictionAngle:
+      s.title = "friction angle";
+      s.label = "friction angle phi";
+      s.unit = "deg";
+      break;
     case Field::Material: {
       s.title = "material";
       for (const sim::MaterialSpec& m : scenario.materials) s.names.push_back(m.name);
@@ -94,7 +105,8 @@ FieldStyle field_style(Field f, const sim::Scenario& scenario) {
   // A range the scenario gives (SI units) holds for every frame of the run.
   const auto given = scenario.output.ranges.find(field_name(f));
   if (given != scenario.output.ranges.end() && !s.categorical) {
-    const double scale = f == Field::StressYY ? 1e-3 : 1.0;  // painted in kPa
+    // Painted in kPa; ranges are given in SI units (angles in degrees).
+    const double scale = f == Field::StressYY || f == Field::Cohesion ? 1e-3 : 1.0;
     s.fixed_range = true;
     s.lo = given->second[0] * scale;
     s.hi = given->second[1] * scale;

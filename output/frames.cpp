@@ -33,6 +33,8 @@ struct WorldPoints {
   int material(std::size_t i) const { return w.points.material[i]; }
   bool yielded(std::size_t i) const { return w.points.yielded[i] != 0; }
   const std::vector<sim::MaterialConstants>& materials() const { return w.materials; }
+  // Its own where a random field set it, else its material's (plastic points).
+  const sim::MohrCoulomb& mohr_coulomb(std::size_t i) const { return sim::point_mohr_coulomb(w, i); }
 };
 
 // A state read back from a .vtu file.
@@ -54,7 +56,24 @@ struct StatePoints {
   int material(std::size_t i) const { return s.material[i]; }
   bool yielded(std::size_t i) const { return s.yielded[i] != 0; }
   const std::vector<sim::MaterialConstants>& materials() const { return m; }
+  sim::MohrCoulomb mohr_coulomb(std::size_t i) const {
+    const sim::MohrCoulomb& own = m[s.material[i]].mohr_coulomb;
+    return s.cohesion.empty() ? own : own.with_strength(s.cohesion[i], s.friction_angle[i]);
+  }
 };
+
+constexpr double kDegreesPerRadian = 180.0 / 3.14159265358979323846;
+
+// A Mohr-Coulomb property of each plastic point; NaN (painted grey) elsewhere.
+template <class P, class Property>
+void strength_values(const P& p, std::vector<double>& v, Property property) {
+  const auto& materials = p.materials();
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const int m = p.material(i);
+    const bool plastic = m >= 0 && std::size_t(m) < materials.size() && materials[m].plastic;
+    v[i] = plastic ? property(p.mohr_coulomb(i)) : std::numeric_limits<double>::quiet_NaN();
+  }
+}
 
 template <class P>
 std::vector<double> values_of(Field f, const P& p) {
@@ -76,6 +95,14 @@ std::vector<double> values_of(Field f, const P& p) {
     case Field::Material:
       for (std::size_t i = 0; i < n; ++i) v[i] = p.material(i);
       break;
+    case Field::Cohesion:
+      strength_values(p, v, [](const sim::MohrCoulomb& mc) { return mc.cohesion / 1000.0; });
+      break;
+    case Field::FrictionAngle:
+      strength_values(p, v, [](const sim::MohrCoulomb& mc) {
+        return mc.friction_angle * kDegreesPerRadian;
+      });
+      break;
     case Field::RelativeYield: {
       const auto& materials = p.materials();
       for (std::size_t i = 0; i < n; ++i) {
@@ -85,7 +112,7 @@ std::vector<double> values_of(Field f, const P& p) {
         } else if (p.yielded(i)) {
           v[i] = 2.0;
         } else if (materials[m].plastic) {
-          v[i] = sim::relative_yield(materials[m].mohr_coulomb, p.stress(i));
+          v[i] = sim::relative_yield(p.mohr_coulomb(i), p.stress(i));
         } else {
           v[i] = 0.0;  // linear elastic: no yield surface
         }

@@ -28,10 +28,12 @@
 
 namespace app {
 
-enum class Field { DisplacementX, DisplacementY, RelativeYield, StressYY, Velocity, Material };
+enum class Field {
+  DisplacementX, DisplacementY, RelativeYield, StressYY, Velocity, Material, Cohesion, FrictionAngle
+};
 
 // "displacement-x", "displacement-y", "relative-yield", "stress-yy",
-// "velocity", "material". parse_field throws std::invalid_argument listing them.
+// "velocity", "material", "cohesion", "friction-angle". parse_field throws std::invalid_argument listing them.
 const std::vector<std::string>& field_names();
 Field parse_field(const std::string& name);
 std::string field_name(Field f);
@@ -53,11 +55,15 @@ FieldStyle field_style(Field f, const sim::Scenario& scenario);
 // Per point value of a field, in the unit field_style() names:
 //   displacement-x/-y  x - ref_x, y - ref_y [m]
 //   relative-yield     Eq. (32) through sim::relative_yield for Mohr-Coulomb
-//                      materials, 2 where the point yielded in the last step
+//                      materials (each point's own surface where a random
+//                      field set it), 2 where the point yielded in the last step
 //                      (paper, Figure 10), 0 for linear-elastic materials
 //   stress-yy          sigma_yy [kPa], tension positive
 //   velocity           |v| [m/s]
 //   material           the material index (categorical)
+//   cohesion           c [kPa] of Mohr-Coulomb points, NaN (grey) for others
+//   friction-angle     phi [deg] of Mohr-Coulomb points, NaN (grey) for others;
+//                      both point by point where a random field set them
 // `materials` are the constants in force (after any material change).
 std::vector<double> field_values(Field f, const sim::World& world);
 // From a saved state; its displacement is the one in the file (from the

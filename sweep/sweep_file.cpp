@@ -1,5 +1,9 @@
 #include "sweep/sweep_file.hpp"
 
+#include "sweep/json_path.hpp"
+#include "sweep/sweep_fields.hpp"
+
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
@@ -19,45 +23,6 @@ Json read_json(const fs::path& file) {
   } catch (const Json::exception& e) {
     throw SweepError(file.string() + ": not JSON: " + e.what());
   }
-}
-
-void require_keys(const Json& node, const std::set<std::string>& allowed,
-                  const std::string& where) {
-  if (!node.is_object()) throw SweepError(where + ": expected an object");
-  for (const auto& item : node.items())
-    if (!allowed.count(item.key())) {
-      std::string list;
-      for (const std::string& k : allowed) list += (list.empty() ? "" : ", ") + k;
-      throw SweepError(where + "." + item.key() + ": unknown key (allowed: " + list + ")");
-    }
-}
-
-std::vector<std::string> split_path(const std::string& path) {
-  std::vector<std::string> parts;
-  std::stringstream in(path);
-  for (std::string part; std::getline(in, part, '.');) parts.push_back(part);
-  return parts;
-}
-
-// The value at `path` in `scene`; null if the scene does not have it.
-Json* find_path(Json& scene, const std::string& path) {
-  Json* at = &scene;
-  for (const std::string& part : split_path(path)) {
-    if (part.empty()) return nullptr;
-    if (at->is_object()) {
-      auto it = at->find(part);
-      if (it == at->end()) return nullptr;
-      at = &*it;
-    } else if (at->is_array()) {
-      if (part.find_first_not_of("0123456789") != std::string::npos) return nullptr;
-      const unsigned long k = std::stoul(part);
-      if (k >= at->size()) return nullptr;
-      at = &(*at)[k];
-    } else {
-      return nullptr;
-    }
-  }
-  return at;
 }
 
 Axis read_axis(const Json& node, const std::string& where, const Json& base,
@@ -89,13 +54,27 @@ void without_painting(Json& scene) {
   output.erase("vtk_interval");
 }
 
+// A painted member of a sweep with random fields also paints each field's
+// property ("friction-angle", "cohesion"): its soil, point by point.
+void paint_field_properties(Json& scene, const SweepFields& f) {
+  Json& output = scene["output"];
+  if (!output.contains("fields")) output["fields"] = {"displacement-x"};  // the reader's default
+  for (const FieldAxis& field : f.fields) {
+    const std::string name = field.path.substr(field.path.rfind('.') + 1) == "cohesion"
+                                 ? "cohesion" : "friction-angle";
+    if (std::find(output["fields"].begin(), output["fields"].end(), name) == output["fields"].end())
+      output["fields"].push_back(name);
+  }
+}
+
 Member make_member(const Sweep& s, const Json& base, int index, const std::set<int>& painted,
                    const fs::path& out) {
   Member m;
   m.index = index;
   m.painted = painted.count(index) > 0;
   Json scene = base;
-  int rest = index;
+  int rest = index / s.fields.samples;
+  m.sample = index % s.fields.samples;
   m.values.resize(s.axes.size());
   for (std::size_t k = s.axes.size(); k-- > 0;) {  // the first axis slowest
     const Axis& a = s.axes[k];
@@ -103,7 +82,9 @@ Member make_member(const Sweep& s, const Json& base, int index, const std::set<i
     rest /= static_cast<int>(a.values.size());
   }
   if (!m.painted) without_painting(scene);
+  if (m.painted) paint_field_properties(scene, s.fields);
   for (std::size_t k = 0; k < s.axes.size(); ++k) *find_path(scene, s.axes[k].path) = m.values[k];
+  m.seeds = put_fields(scene, s.fields, m.sample);
   m.scene_text = scene.dump(2) + "\n";
   const std::string label = (member_dir(out, index) / "scene.json").string();
   try {
@@ -112,6 +93,8 @@ Member make_member(const Sweep& s, const Json& base, int index, const std::set<i
     std::string values;
     for (std::size_t k = 0; k < s.axes.size(); ++k)
       values += (k ? ", " : "") + s.axes[k].path + " = " + m.values[k].dump();
+    if (!s.fields.fields.empty())
+      values += (values.empty() ? "sample " : ", sample ") + std::to_string(m.sample);
     throw SweepError(s.file.string() + ": member " + std::to_string(index) + " (" + values +
                      "): " + e.what());
   }
@@ -131,23 +114,29 @@ Sweep read_sweep(const fs::path& file, const fs::path& out, const std::set<int>&
   s.file = file;
   const Json doc = read_json(file);
   const std::string f = file.string();
-  require_keys(doc, {"base", "axes"}, f);
+  require_keys(doc, {"base", "axes", "random_fields", "samples", "seed"}, f);
   if (!doc.contains("base") || !doc["base"].is_string())
     throw SweepError(f + ": base: expected the base scene's file (a string)");
-  if (!doc.contains("axes") || !doc["axes"].is_array() || doc["axes"].empty())
+  // Without random fields the axes are the sweep; with them they may be left out.
+  const bool axes_needed = !doc.contains("random_fields") || doc.contains("axes");
+  if (axes_needed && (!doc.contains("axes") || !doc["axes"].is_array() || doc["axes"].empty()))
     throw SweepError(f + ": axes: expected a non-empty array of {\"path\", \"values\"}");
   s.base = file.parent_path() / doc["base"].get<std::string>();
   const Json base = read_json(s.base);
-  long long count = 1;
-  for (std::size_t k = 0; k < doc["axes"].size(); ++k) {
+  s.fields = read_sweep_fields(doc, f, base, s.base.string());
+  long long count = s.fields.samples;
+  const Json axes = doc.value("axes", Json::array());
+  for (std::size_t k = 0; k < axes.size(); ++k) {
     const std::string where = f + ": axes[" + std::to_string(k) + "]";
-    s.axes.push_back(read_axis(doc["axes"][k], where, base, s.base.string()));
+    s.axes.push_back(read_axis(axes[k], where, base, s.base.string()));
     for (std::size_t j = 0; j < k; ++j)
       if (s.axes[j].path == s.axes[k].path)
         throw SweepError(where + " (" + s.axes[k].path + "): also axes[" + std::to_string(j) +
                          "]'s path (each path may be swept once)");
     count *= static_cast<long long>(s.axes.back().values.size());
-    if (count > 9999) throw SweepError(f + ": axes: more than 9999 members");
+    if (count > 9999)
+      throw SweepError(f + ": axes" + (s.fields.samples > 1 ? " times samples" : "") +
+                       ": more than 9999 members");
   }
   for (int p : painted)
     if (p < 0 || p >= count)

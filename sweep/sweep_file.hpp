@@ -1,7 +1,8 @@
 // A sweep file (`landslide sweep SWEEP.json`, README.md "landslide sweep"):
 // a base scene and axes, each a JSON path into it and the values it takes.
-// Its members are the Cartesian product of the axes, the first axis slowest;
-// each member's scene is the base with its values put in and is read by the
+// Its members are the Cartesian product of the axes, the first axis slowest,
+// times the samples of its random fields (sweep/sweep_fields.hpp), the
+// sample fastest; each member's scene is the base with its values put in and is read by the
 // scene reader (sim::parse_scenario) before any member runs.
 #pragma once
 
@@ -14,6 +15,7 @@
 #include <nlohmann/json.hpp>
 
 #include "sim/scene/scenario.hpp"
+#include "sweep/sweep_fields.hpp"
 
 namespace sweep {
 
@@ -32,6 +34,8 @@ struct Axis {
 struct Member {
   int index = 0;                       // its place in the product, from 0
   std::vector<nlohmann::json> values;  // one per axis
+  int sample = 0;                      // of the random fields (0 without them)
+  std::vector<std::uint64_t> seeds;    // one per random field
   std::string scene_text;              // the member's scene, as written to its folder
   sim::Scenario scenario;
   bool painted = false;                // --paint: the base scene's frames and VTK states
@@ -41,6 +45,7 @@ struct Sweep {
   std::filesystem::path file;
   std::filesystem::path base;  // relative to the sweep file's folder
   std::vector<Axis> axes;
+  SweepFields fields;
   std::vector<Member> members;
 };
 

@@ -64,12 +64,17 @@ std::string cell(const Json& v) {
 }
 
 void write_csv(std::ostream& os, const Sweep& s, const std::vector<MemberResult>& results) {
+  const bool fields = !s.fields.fields.empty();
   os << "member";
   for (const Axis& a : s.axes) os << ',' << cell(a.path);
+  if (fields) os << ",sample";
+  for (const FieldAxis& f : s.fields.fields) os << ',' << cell(f.path + " seed");
   os << ",status,runout_m,deposit_slope_deg,max_displacement_m,at_rest,energy_relative_error\n";
   for (const MemberResult& r : results) {
     os << r.index;
     for (const Json& v : r.values) os << ',' << cell(v);
+    if (fields) os << ',' << r.sample;
+    for (std::uint64_t seed : r.seeds) os << ',' << seed;
     os << ',' << cell(r.status) << ',' << cell(r.runout_m) << ',' << cell(r.deposit_slope_deg)
        << ',' << cell(r.max_displacement_m) << ',' << cell(r.at_rest) << ','
        << cell(r.energy_relative_error) << '\n';
@@ -79,10 +84,18 @@ void write_csv(std::ostream& os, const Sweep& s, const std::vector<MemberResult>
 Json results_json(const Sweep& s, const std::vector<MemberResult>& results) {
   Json axes = Json::array();
   for (const Axis& a : s.axes) axes.push_back({{"path", a.path}, {"values", a.values}});
+  Json fields = Json::array();
+  for (const FieldAxis& f : s.fields.fields) {
+    Json field = f.parameters;
+    field["path"] = f.path;
+    fields.push_back(field);
+  }
   Json members = Json::array();
   for (const MemberResult& r : results)
     members.push_back({{"member", r.index},
                        {"values", r.values},
+                       {"sample", r.sample},
+                       {"seeds", r.seeds},
                        {"status", r.status},
                        {"runout_m", r.runout_m},
                        {"deposit_slope_deg", r.deposit_slope_deg},
@@ -91,6 +104,7 @@ Json results_json(const Sweep& s, const std::vector<MemberResult>& results) {
                        {"energy_relative_error", r.energy_relative_error},
                        {"wall_time_s", r.wall_time_s}});
   return {{"sweep_file", s.file.string()}, {"base", s.base.string()}, {"axes", axes},
+          {"random_fields", fields}, {"samples", s.fields.samples}, {"seed", s.fields.seed},
           {"members", members}};
 }
 
@@ -106,6 +120,8 @@ MemberResult read_result(const Member& member, const fs::path& out) {
   MemberResult r;
   r.index = member.index;
   r.values = member.values;
+  r.sample = member.sample;
+  r.seeds = member.seeds;
   const fs::path dir = member_dir(out, member.index);
   const Json summary = read_summary(dir);
   if (!summary.is_object() || read_text(dir / "scene.json") != member.scene_text) {

@@ -6,6 +6,7 @@
 #include "output/frames.hpp"
 #include "sim/physics/material.hpp"
 #include "sim/physics/mohr_coulomb.hpp"
+#include "sim/physics/point_strength.hpp"
 
 namespace {
 
@@ -125,8 +126,8 @@ TEST(Fields, CaptureKeepsPositionsHalfSizesAndEachField) {
   EXPECT_FLOAT_EQ(fr.values[1][1], 0.5f);
 }
 
-TEST(Fields, SavedStateGivesTheSameValues) {
-  const sim::World w = tiny_world();
+// The world's points as write_vtu saves them (displacement from ref_x, ref_y).
+sim::PointState saved_state(const sim::World& w) {
   sim::PointState s;
   const sim::Particles& p = w.points;
   s.x = p.x;
@@ -145,10 +146,62 @@ TEST(Fields, SavedStateGivesTheSameValues) {
   s.sxy = p.sxy;
   s.szz = p.szz;
   s.density = p.density;
+  s.cohesion = w.strength.cohesion;
+  s.friction_angle = w.strength.friction_angle;
+  return s;
+}
+
+TEST(Fields, SavedStateGivesTheSameValues) {
+  const sim::World w = tiny_world();
+  const sim::PointState s = saved_state(w);
   for (const Field f : {Field::DisplacementX, Field::DisplacementY, Field::RelativeYield,
                         Field::StressYY, Field::Velocity, Field::Material})
     EXPECT_EQ(app::field_values(f, s, w.materials), app::field_values(f, w))
         << app::field_name(f);
+}
+
+// Equal, NaN where the other is NaN (points painted grey).
+void expect_same_values(const std::vector<double>& a, const std::vector<double>& b,
+                        const std::string& what) {
+  ASSERT_EQ(a.size(), b.size()) << what;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    if (std::isnan(a[i])) EXPECT_TRUE(std::isnan(b[i])) << what << " point " << i;
+    else EXPECT_EQ(a[i], b[i]) << what << " point " << i;
+  }
+}
+
+TEST(Fields, StrengthIsEachPointsOwnWhereARandomFieldSetIt) {
+  sim::World w = tiny_world();
+  const std::vector<double> fields[] = {app::field_values(Field::FrictionAngle, w),
+                                        app::field_values(Field::Cohesion, w)};
+  for (int i = 0; i < 3; ++i) {  // the material's own values, house grey
+    EXPECT_NEAR(fields[0][i], 30, 1e-12);
+    EXPECT_EQ(fields[1][i], 10);
+  }
+  EXPECT_TRUE(std::isnan(fields[0][3]) && std::isnan(fields[1][3]));
+  const double deg = M_PI / 180;
+  sim::set_point_strength(w, 0, "friction_angle", {20 * deg, 25 * deg, 35 * deg, 99});
+  const std::vector<double> phi = app::field_values(Field::FrictionAngle, w);
+  EXPECT_NEAR(phi[0], 20, 1e-12);
+  EXPECT_NEAR(phi[1], 25, 1e-12);
+  EXPECT_NEAR(phi[2], 35, 1e-12);
+  EXPECT_TRUE(std::isnan(phi[3]));  // the house is not soil: its value is not read
+  // Point 1 is judged against its own surface, not the material's 30 degrees.
+  const sim::Stress st{w.points.sxx[1], w.points.syy[1], w.points.sxy[1], w.points.szz[1]};
+  const double own = sim::relative_yield(sim::point_mohr_coulomb(w, 1), st);
+  EXPECT_EQ(app::field_values(Field::RelativeYield, w)[1], own);
+  EXPECT_GT(own, sim::relative_yield(w.materials[0].mohr_coulomb, st) + 0.01);
+}
+
+TEST(Fields, SavedStateWithARandomFieldGivesTheSameValues) {
+  sim::World w = tiny_world();
+  sim::set_point_strength(w, 0, "cohesion", {5e3, 20e3, 1e3, 0});
+  const sim::PointState s = saved_state(w);
+  ASSERT_EQ(s.cohesion.size(), 4u);
+  for (const Field f : {Field::RelativeYield, Field::Cohesion, Field::FrictionAngle})
+    expect_same_values(app::field_values(f, s, w.materials), app::field_values(f, w),
+                       app::field_name(f));
+  EXPECT_EQ(app::field_values(Field::Cohesion, s, w.materials)[1], 20);
 }
 
 TEST(Fields, HalfSizeIsHalfTheRootOfTheVolume) {

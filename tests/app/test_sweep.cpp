@@ -6,6 +6,9 @@
 
 #include <filesystem>
 #include <fstream>
+#include <functional>
+#include <set>
+#include <sstream>
 #include <nlohmann/json.hpp>
 
 #include "run_binary.hpp"
@@ -45,6 +48,18 @@ class Sweep : public ::testing::Test {
   }
   void TearDown() override { fs::remove_all(dir_); }
   void write_sweep(const json& sweep) { std::ofstream(dir_ / "sweep.json") << sweep.dump(1); }
+  // Each sweep exits 2 naming what it should, and no member ran.
+  template <class Cases>
+  void expect_refused(const Cases& cases) {
+    for (const auto& c : cases) {
+      write_sweep(c.sweep);
+      const auto r = landslide("sweep sweep.json --out out --threads 1", dir_);
+      EXPECT_EQ(r.status, 2) << c.what << ": " << r.output;
+      for (const std::string& n : c.named)
+        EXPECT_NE(r.output.find(n), std::string::npos) << c.what << ": " << r.output;
+      EXPECT_FALSE(fs::exists(dir_ / "out")) << c.what << ": a member ran";
+    }
+  }
   fs::path dir_;
 };
 
@@ -128,8 +143,8 @@ TEST_F(Sweep, BadSweepFilesAreRefusedBeforeAnyMemberRuns) {
     return json::array({{{"path", path}, {"values", values}}});
   };
   const std::vector<BadCase> cases = {
-      {"unknown key", {{"base", "base.json"}, {"axes", axis("grid.cell_size", {2})}, {"samples", 4}},
-       {"sweep.json.samples: unknown key"}},
+      {"unknown key", {{"base", "base.json"}, {"axes", axis("grid.cell_size", {2})}, {"sample", 4}},
+       {"sweep.json.sample: unknown key"}},
       {"unknown axis key",
        {{"base", "base.json"},
         {"axes", json::array({{{"path", "grid.cell_size"}, {"values", {2}}, {"step", 1}}})}},
@@ -149,14 +164,109 @@ TEST_F(Sweep, BadSweepFilesAreRefusedBeforeAnyMemberRuns) {
       {"empty axis", {{"base", "base.json"}, {"axes", axis("grid.cell_size", json::array())}},
        {"axes[0] (grid.cell_size).values: empty"}},
   };
-  for (const BadCase& c : cases) {
-    write_sweep(c.sweep);
-    const auto r = landslide("sweep sweep.json --out out --threads 1", dir_);
-    EXPECT_EQ(r.status, 2) << c.what << ": " << r.output;
-    for (const std::string& n : c.named)
-      EXPECT_NE(r.output.find(n), std::string::npos) << c.what << ": " << r.output;
-    EXPECT_FALSE(fs::exists(dir_ / "out")) << c.what << ": a member ran";
+  expect_refused(cases);
+}
+
+// A random friction angle after the trigger: 4 samples of the base scene.
+json field_sweep() {
+  return {{"base", "base.json"},
+          {"random_fields", json::array({{{"path", "stages.1.set.friction_angle"},
+                                          {"distribution", "truncated-normal"},
+                                          {"cov", 0.2},
+                                          {"lower", 12},
+                                          {"upper", 30},
+                                          {"scale_of_fluctuation", {20, 4}}}})},
+          {"samples", 4},
+          {"seed", 2026}};
+}
+
+TEST_F(Sweep, RandomFieldSamplesHaveTheirOwnSeedsAndAnExceedancePlot) {
+  write_sweep(field_sweep());
+  const auto r = landslide("sweep sweep.json --out out --threads 1 --paint 2", dir_);
+  ASSERT_EQ(r.status, 0) << r.output;
+  const auto rows = lines(read_text(dir_ / "out/sweep.csv"));
+  ASSERT_EQ(rows.size(), 5u);
+  EXPECT_EQ(rows[0].rfind("member,sample,stages.1.set.friction_angle seed,status,runout_m", 0), 0u)
+      << rows[0];
+  std::set<std::string> seeds, runouts;
+  std::vector<std::string> seed_of_member;
+  for (std::size_t k = 1; k < rows.size(); ++k) {
+    std::vector<std::string> cells;
+    std::stringstream in(rows[k]);
+    for (std::string c; std::getline(in, c, ',');) cells.push_back(c);
+    ASSERT_GE(cells.size(), 5u) << rows[k];
+    EXPECT_EQ(cells[1], std::to_string(k - 1));
+    EXPECT_EQ(cells[3], "finished") << rows[k];
+    seeds.insert(cells[2]);
+    seed_of_member.push_back(cells[2]);
+    runouts.insert(cells[4]);
   }
+  EXPECT_EQ(seeds.size(), 4u) << "each sample its own field";
+  EXPECT_GT(runouts.size(), 1u) << "the fields change the runout";
+  // The member's scene is a scene of its own: the field, its mean and seed.
+  const json scene = json::parse(read_text(dir_ / "out/members/0002/scene.json"));
+  const json& field = scene["stages"][1]["set"]["friction_angle"]["random_field"];
+  EXPECT_EQ(field["mean"], base_scene()["stages"][1]["set"]["friction_angle"]);
+  EXPECT_EQ(std::to_string(field["seed"].get<std::uint64_t>()), seed_of_member[2]);
+  EXPECT_TRUE(fs::exists(dir_ / "out/sweep-exceedance.png"));
+  // The painted member also paints its friction angle, point by point.
+  EXPECT_TRUE(fs::exists(dir_ / "out/members/0002/frames/friction-angle"));
+  EXPECT_FALSE(fs::exists(dir_ / "out/members/0001/frames"));
+  // Rerun alone, a member's scene gives the runout the sweep reported.
+  const auto again = landslide("run out/members/0002/scene.json --out again --threads 1", dir_);
+  ASSERT_EQ(again.status, 0) << again.output;
+  const json summary = json::parse(read_text(dir_ / "again/summary.json"));
+  const json member = json::parse(read_text(dir_ / "out/members/0002/summary.json"));
+  EXPECT_EQ(summary["stages"].back()["metrics"]["runout_m"],
+            member["stages"].back()["metrics"]["runout_m"]);
+}
+
+TEST_F(Sweep, BadRandomFieldsAreRefusedBeforeAnyMemberRuns) {
+  auto with = [](const std::function<void(json&)>& change) {
+    json s = field_sweep();
+    change(s);
+    return s;
+  };
+  const std::vector<BadCase> cases = {
+      {"no samples", with([](json& s) { s.erase("samples"); }),
+       {"samples = missing: expected a whole number in [1, 9999]"}},
+      {"zero samples", with([](json& s) { s["samples"] = 0; }), {"samples = 0"}},
+      {"fractional seed", with([](json& s) { s["seed"] = 1.5; }),
+       {"seed = 1.5: expected a whole number in [0, 2^53 - 1]"}},
+      {"samples without fields",
+       {{"base", "base.json"},
+        {"axes", json::array({{{"path", "grid.cell_size"}, {"values", {2}}}})},
+        {"samples", 3}},
+       {"samples: given without random_fields"}},
+      {"unknown field key", with([](json& s) { s["random_fields"][0]["theta"] = 3; }),
+       {"random_fields[0].theta: unknown key"}},
+      {"a property no field can set",
+       with([](json& s) { s["random_fields"][0]["path"] = "materials.soil.density"; }),
+       {"random_fields[0] (materials.soil.density): expected the path of a cohesion or "
+        "friction_angle"}},
+      {"a path the base lacks",
+       with([](json& s) { s["random_fields"][0]["path"] = "stages.2.set.cohesion"; }),
+       {"random_fields[0] (stages.2.set.cohesion): the base scene", "has no stages.2.set.cohesion"}},
+      {"a cohesion field of mean 0",
+       with([](json& s) { s["random_fields"][0]["path"] = "stages.1.set.cohesion"; }),
+       {"member 0 (sample 0)", "stages[1].set.cohesion.random_field.mean = 0: expected a number in "
+        "(0, inf)"}},
+      {"a field of the materials",
+       with([](json& s) { s["random_fields"][0]["path"] = "materials.soil.friction_angle"; }),
+       {"member 0 (sample 0)", "materials.soil.friction_angle = {\"random_field\""}},
+      {"a value the scene refuses",
+       with([](json& s) { s["random_fields"][0]["lower"] = 1; }),
+       {"member 0 (sample 0)", "stages[1].set.friction_angle.random_field.lower = 1: expected a "
+        "number in ["}},
+      {"lognormal friction",
+       with([](json& s) {
+         s["random_fields"][0].erase("lower");
+         s["random_fields"][0].erase("upper");
+         s["random_fields"][0]["distribution"] = "lognormal";
+       }),
+       {"random_field.distribution = \"lognormal\": expected \"truncated-normal\""}},
+  };
+  expect_refused(cases);
 }
 
 }  // namespace
