@@ -107,7 +107,7 @@ int run_sweep(const SweepOptions& o, const RunMember& run_member,
     for (int index : plan.first) status = run_one(s, o, run_member, index, 0, status);
   ranks.barrier();
   for (std::size_t k = 0; k < plan.rest.size(); ++k)
-    if (static_cast<int>(k % ranks.size()) == ranks.rank())
+    if (rest_rank(plan, k, ranks.size()) == ranks.rank())
       status = run_one(s, o, run_member, plan.rest[k], ranks.rank(), status);
   status = ranks.max_over_ranks(status);
   if (ranks.rank() == 0) report(s, o.out_dir);

@@ -30,7 +30,7 @@ double elapsed_seconds(const Plan& plan, const std::map<int, double>& seconds, i
   for (int index : plan.first) first += seconds.at(index);
   std::vector<double> rank_seconds(std::max(ranks, 1), 0.0);
   for (std::size_t k = 0; k < plan.rest.size(); ++k)
-    rank_seconds[k % rank_seconds.size()] += seconds.at(plan.rest[k]);
+    rank_seconds[rest_rank(plan, k, ranks)] += seconds.at(plan.rest[k]);
   return first + *std::max_element(rank_seconds.begin(), rank_seconds.end());
 }
 
@@ -50,6 +50,10 @@ Plan make_plan(const Sweep& s, const fs::path& cache, const std::vector<bool>& d
     (needs_state ? p.first : p.rest).push_back(m.index);
   }
   return p;
+}
+
+int rest_rank(const Plan& plan, std::size_t k, int ranks) {
+  return static_cast<int>((k + plan.first.size()) % static_cast<std::size_t>(std::max(ranks, 1)));
 }
 
 MemberRun member_run(const SweepOptions& o, int index) {

@@ -17,15 +17,21 @@ namespace sweep {
 // Which rank runs which member. Rank 0 first runs, for each distinct set of
 // shared gravity stages (one cached state file), the first member that needs
 // it, so that state is computed once and lies in the cache before any other
-// rank looks for it; the other members go round-robin over the ranks.
+// rank looks for it; the other members go round-robin over the ranks,
+// starting where `first` left off (rest_rank).
 struct Plan {
   std::vector<int> first;  // rank 0, before the barrier
-  std::vector<int> rest;   // member rest[k] on rank k % ranks
+  std::vector<int> rest;   // member rest[k] on rank rest_rank(plan, k, ranks)
   std::set<int> reuses;    // members of rest that start from a state `first` computes
 };
 
 // The plan for the members not `done`, against what the cache holds now.
 Plan make_plan(const Sweep& s, const std::filesystem::path& cache, const std::vector<bool>& done);
+
+// The rank of member rest[k]: (k + first.size()) % ranks. Rank 0 has run the
+// members of `first` while the others waited, so the round starts after it:
+// 8 members on 2 ranks, one of them first, run 4 and 4, not 5 and 3.
+int rest_rank(const Plan& plan, std::size_t k, int ranks);
 
 // Member `index`'s run as run_one hands it to RunMember.
 MemberRun member_run(const SweepOptions& o, int index);
