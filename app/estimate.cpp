@@ -4,11 +4,11 @@
 
 #include <chrono>
 #include <cmath>
-#include <cstdio>
 #include <fstream>
 #include <map>
 #include <sstream>
 
+#include "output/amount_text.hpp"
 #include "output/frames.hpp"
 #include "sim/scene/seed.hpp"
 #include "sim/physics/step.hpp"
@@ -87,30 +87,6 @@ void count_stages(const sim::Simulation& sim, Estimate& e) {
     if (s.output.vtk == "interval") e.states += events(from, stage.duration, s.output.vtk_interval);
   }
   if (s.output.vtk == "frames") e.states = e.frames;
-}
-
-std::string bytes_text(double b) {
-  char text[32];
-  const char* units[] = {"B", "kB", "MB", "GB", "TB"};
-  int u = 0;
-  while (b >= 1000 && u < 4) b /= 1000, ++u;
-  std::snprintf(text, sizeof text, u == 0 ? "%.0f %s" : "%.3g %s", b, units[u]);
-  return text;
-}
-
-std::string duration_text(double s) {
-  char text[32];
-  if (s < 120) std::snprintf(text, sizeof text, "%.0f s", s);
-  else if (s < 7200) std::snprintf(text, sizeof text, "%.0f min", s / 60);
-  else if (s < 172800) std::snprintf(text, sizeof text, "%.1f h", s / 3600);
-  else std::snprintf(text, sizeof text, "%.3g days", s / 86400);
-  return text;
-}
-
-std::string count_text(double n) {
-  char text[32];
-  std::snprintf(text, sizeof text, n < 1e7 ? "%.0f" : "%.3g", n);
-  return text;
 }
 
 }  // namespace

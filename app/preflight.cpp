@@ -1,5 +1,7 @@
 #include "app/preflight.hpp"
 
+#include <omp.h>
+
 #include <iostream>
 #include <sstream>
 
@@ -74,7 +76,8 @@ void set_up_simulation(const PreflightRequest& r, Prepared& p) {
 
 }  // namespace
 
-bool preflight(const PreflightRequest& r, Prepared& p, std::ostream& estimate_out) {
+Verdict preflight_verdict(const PreflightRequest& r, Prepared& p, std::ostream& estimate_out) {
+  Verdict v;
   try {
     check_paths(r);
     const auto [width, height] = set_up_painting(r, p);
@@ -87,15 +90,27 @@ bool preflight(const PreflightRequest& r, Prepared& p, std::ostream& estimate_ou
     print_estimate(estimate_out, p.estimate);
     const std::string passed = limit_passed(p.estimate, r.scenario_file);
     if (!passed.empty() && !r.allow_long) throw Refusal{passed + " (or --allow-long)"};
-    if (!passed.empty()) std::cerr << "warning: " << passed << "; going on (--allow-long)\n";
-    return true;
+    v.warning = passed;
+    return v;
   } catch (const Refusal& e) {
-    std::cerr << "error: " << e.message << '\n';
+    v.refusal = e.message;
   } catch (const PathError& e) {
-    std::cerr << "error: " << e.what() << '\n';
+    v.refusal = e.what();
   }
   p = Prepared{};
-  return false;
+  return v;
+}
+
+bool preflight(const PreflightRequest& r, Prepared& p, std::ostream& estimate_out) {
+  const Verdict v = preflight_verdict(r, p, estimate_out);
+  if (!v.warning.empty()) std::cerr << "warning: " << v.warning << "; going on (--allow-long)\n";
+  if (!v.refusal.empty()) std::cerr << "error: " << v.refusal << '\n';
+  return v.refusal.empty();
+}
+
+int use_threads(int asked) {
+  if (asked > 0) omp_set_num_threads(asked);
+  return omp_get_max_threads();
 }
 
 }  // namespace app

@@ -35,13 +35,29 @@ struct Prepared {
   Estimate estimate;
 };
 
+// What the preflight found, unprinted: a sweep (sweep/) names its member in
+// front of the message, so the message is handed back rather than printed.
+struct Verdict {
+  std::string refusal;  // "": the run may go on; else the one-line message
+  std::string warning;  // the limit --allow-long let the estimate pass ("" if none)
+};
+
 // In order: the output folder (a file, not writable, or an earlier run's
 // outputs without --overwrite) and the state cache; ffmpeg and the painter,
 // and frames of image_size laid out (too small for their annotations);
 // seeding (a body holding no point) and the checkpoint or cached state;
 // the first time step (a fixed one above the stable bound); the estimate,
-// printed to `estimate_out`, against its limits. Writes nothing. On bad
-// input prints "error: ..." (one line) to stderr and returns false.
+// printed to `estimate_out`, against its limits. Writes nothing, prints
+// nothing but the estimate. `prepared` is emptied on a refusal.
+Verdict preflight_verdict(const PreflightRequest& request, Prepared& prepared,
+                          std::ostream& estimate_out);
+
+// preflight_verdict, its warning printed as "warning: ..." and its refusal as
+// "error: ..." (one line each) on stderr; false on a refusal.
 bool preflight(const PreflightRequest& request, Prepared& prepared, std::ostream& estimate_out);
+
+// Puts the OpenMP threads asked for (0: OpenMP's default) in force before the
+// preflight calibrates the step rate with them; returns the threads now in force.
+int use_threads(int asked);
 
 }  // namespace app

@@ -1,7 +1,6 @@
 // `landslide run`, `resume` and `check`: the preflight (app/preflight.hpp)
 // before anything is written, then the time loop, handed to sim::Simulation.
 #include "landslide_version.hpp"
-#include <omp.h>
 
 #include <algorithm>
 #include <chrono>
@@ -41,12 +40,6 @@ struct RunSetup {
   const Checkpoint* checkpoint = nullptr;  // resume from it
   bool overwrite = false, allow_long = false;
 };
-
-// The OpenMP threads the run asks for (0: OpenMP's default), now in force.
-int use_threads(int asked) {
-  if (asked > 0) omp_set_num_threads(asked);
-  return omp_get_max_threads();
-}
 
 PreflightRequest preflight_request(const RunSetup& r, int threads) {
   PreflightRequest q;

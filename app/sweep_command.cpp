@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "app/commands.hpp"
+#include "app/preflight.hpp"
 
 namespace app {
 
@@ -42,6 +43,45 @@ int run_member(const sweep::MemberRun& m) {
   return run_command(run);
 }
 
+// The point-steps, still to run in `p`, of the stages a cached gravity state
+// skips: a member that finds its state in the cache does not run them.
+double shared_point_steps(const sim::Scenario& s, const Prepared& p) {
+  if (p.reused_stages > 0) return 0;  // restored already: not in the estimate
+  double steps = 0;
+  std::size_t timed = 0;  // the estimate lists timed stages only
+  for (std::size_t k = 0; k < sim::reusable_stages(s); ++k)
+    if (s.stages[k].type != sim::StageType::MaterialChange)
+      steps += p.estimate.stages.at(timed++).steps;
+  return steps * double(p.estimate.points);
+}
+
+// The preflight run_member's `landslide run` will go through at the member's
+// turn, with the same options, asked now.
+sweep::MemberCheck check_member(const sweep::MemberRun& m, const sim::Scenario& scenario) {
+  PreflightRequest q;
+  q.scenario = &scenario;
+  q.scenario_file = m.scene.string();
+  q.out = m.out;
+  q.state_cache = m.state_cache;
+  q.overwrite = true;  // as run_member
+  q.allow_long = m.allow_long;
+  q.threads = use_threads(m.threads);
+  Prepared p;
+  std::ostringstream unused;  // the sweep prints one estimate for all its members
+  const Verdict v = preflight_verdict(q, p, unused);
+  sweep::MemberCheck c;
+  c.refusal = v.refusal;
+  c.warning = v.warning;
+  if (!c.refusal.empty()) return c;
+  c.point_steps = p.estimate.point_steps;
+  c.shared_point_steps = shared_point_steps(scenario, p);
+  c.wall_seconds = p.estimate.wall_seconds;
+  c.point_steps_per_second = p.estimate.point_steps_per_second;
+  c.threads = p.estimate.threads;
+  c.may_end_early = p.estimate.may_end_early;
+  return c;
+}
+
 }  // namespace
 
 CLI::App* add_sweep_command(CLI::App& cli, sweep::SweepOptions& o) {
@@ -56,12 +96,15 @@ CLI::App* add_sweep_command(CLI::App& cli, sweep::SweepOptions& o) {
       ->check(CLI::Range(1, 1024));
   cmd->add_flag("--allow-long", o.allow_long,
                 "Run members whose estimate passes the limits (time, steps, memory, disk)");
+  cmd->add_flag("--check", o.check_only,
+                "Put every member to run through run's preflight and print the sweep's "
+                "estimate; run nothing, write nothing");
   return cmd;
 }
 
 int sweep_command(const sweep::SweepOptions& options) {
   try {
-    return sweep::run_sweep(options, run_member);
+    return sweep::run_sweep(options, run_member, check_member);
   } catch (const std::exception& e) {
     std::cerr << "error: " << e.what() << '\n';
     return kExitFailed;

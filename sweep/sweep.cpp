@@ -2,14 +2,13 @@
 
 #include <algorithm>
 #include <iostream>
-#include <map>
 #include <vector>
 
 #include "output/exit_status.hpp"
 #include "output/output_dir.hpp"
-#include "output/state_cache.hpp"
 #include "sim/io/atomic_file.hpp"
 #include "sweep/ranks.hpp"
+#include "sweep/sweep_plan.hpp"
 #include "sweep/sweep_results.hpp"
 
 namespace sweep {
@@ -17,28 +16,6 @@ namespace sweep {
 namespace fs = std::filesystem;
 
 namespace {
-
-// Which rank runs which member. Rank 0 first runs, for each distinct set of
-// shared gravity stages (one cached state file), the first member that needs
-// it, so that state is computed once and lies in the cache before any other
-// rank looks for it; the other members go round-robin over the ranks.
-struct Plan {
-  std::vector<int> first;  // rank 0, before the barrier
-  std::vector<int> rest;   // member rest[k] on rank k % ranks
-};
-
-Plan make_plan(const Sweep& s, const fs::path& cache, const std::vector<bool>& done) {
-  Plan p;
-  std::map<fs::path, bool> seen;
-  for (const Member& m : s.members) {
-    const fs::path state = app::cached_state_path(cache, m.scenario);
-    const bool needs_state = !state.empty() && !seen[state] && !fs::exists(state);
-    if (!state.empty()) seen[state] = true;
-    if (done[m.index]) continue;
-    (needs_state ? p.first : p.rest).push_back(m.index);
-  }
-  return p;
-}
 
 bool stopped(int status) {
   return status == app::kExitInterrupted || status == app::kExitTerminated;
@@ -49,12 +26,7 @@ int run_one(const Sweep& s, const SweepOptions& o, const RunMember& run_member, 
             int rank, int status) {
   if (stopped(status)) return status;  // Ctrl-C: no further members
   const Member& m = s.members[index];
-  MemberRun r;
-  r.out = member_dir(o.out_dir, index);
-  r.scene = r.out / "scene.json";
-  r.state_cache = fs::path(o.out_dir) / "state-cache";
-  r.threads = o.threads;
-  r.allow_long = o.allow_long;
+  const MemberRun r = member_run(o, index);
   fs::create_directories(r.out);
   sim::write_file_atomically(r.scene.string(), [&](std::ostream& os) { os << m.scene_text; });
   std::cerr << "sweep: member " << index << " of " << s.members.size() << " on rank " << rank
@@ -85,9 +57,32 @@ int checked_sweep(const SweepOptions& o, Sweep& s, bool speaks) {
   return app::kExitOk;
 }
 
+// Rank 0 alone puts the members through the preflight (one calibration of
+// the step rate, one set of messages); every rank gets its verdict, so all
+// stop or go on together (an exception on rank 0 too: the others would wait
+// for it forever). Prints to `say`: stdout for --check, else stderr.
+int preflight_members(const Sweep& s, const Plan& plan, const SweepOptions& o,
+                      const CheckMember& check_member, Ranks& ranks, std::ostream& say) {
+  int status = app::kExitOk;
+  if (ranks.rank() == 0) {
+    try {
+      SweepEstimate e;
+      if (check_members(s, plan, o, check_member, ranks.size(), e))
+        print_sweep_estimate(say, e);
+      else
+        status = app::kExitBadInput;
+    } catch (const std::exception& e) {
+      std::cerr << "error: " << e.what() << '\n';
+      status = app::kExitFailed;
+    }
+  }
+  return ranks.max_over_ranks(status);
+}
+
 }  // namespace
 
-int run_sweep(const SweepOptions& o, const RunMember& run_member) {
+int run_sweep(const SweepOptions& o, const RunMember& run_member,
+              const CheckMember& check_member) {
   Ranks ranks;
   Sweep s;
   if (checked_sweep(o, s, ranks.rank() == 0) != app::kExitOk) return app::kExitBadInput;
@@ -96,15 +91,23 @@ int run_sweep(const SweepOptions& o, const RunMember& run_member) {
   for (const Member& m : s.members)
     skipped += done[m.index] = member_finished(member_dir(o.out_dir, m.index), m.scene_text);
   const Plan plan = make_plan(s, fs::path(o.out_dir) / "state-cache", done);
+  std::ostream& say = o.check_only ? std::cout : std::cerr;
   if (ranks.rank() == 0)
-    std::cerr << "sweep: " << s.members.size() << " members over " << ranks.size()
-              << " rank(s); " << skipped << " already finished, not run again\n";
+    say << "sweep: " << s.members.size() << " members over " << ranks.size() << " rank(s); "
+        << skipped << " already finished, not run again\n";
+  if (const int verdict = preflight_members(s, plan, o, check_member, ranks, say);
+      verdict != app::kExitOk)
+    return verdict;
+  if (o.check_only) {
+    if (ranks.rank() == 0) say << o.file << ": ok (nothing run, nothing written)\n";
+    return app::kExitOk;
+  }
   int status = app::kExitOk;
   if (ranks.rank() == 0)
     for (int index : plan.first) status = run_one(s, o, run_member, index, 0, status);
   ranks.barrier();
   for (std::size_t k = 0; k < plan.rest.size(); ++k)
-    if (static_cast<int>(k % ranks.size()) == ranks.rank())
+    if (rest_rank(plan, k, ranks.size()) == ranks.rank())
       status = run_one(s, o, run_member, plan.rest[k], ranks.rank(), status);
   status = ranks.max_over_ranks(status);
   if (ranks.rank() == 0) report(s, o.out_dir);

@@ -1,7 +1,8 @@
 // `landslide sweep` with the real binary: one and two MPI ranks give the same
 // sweep.csv, a resumed sweep runs only what is not finished, --paint paints
 // only the members named, and bad sweep files are refused (exit 2) before any
-// member runs, naming the member and the JSON path.
+// member runs, naming the member and the JSON path; so is a member that
+// run's preflight refuses, and `--check` stops after the preflight.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -60,8 +61,24 @@ class Sweep : public ::testing::Test {
       EXPECT_FALSE(fs::exists(dir_ / "out")) << c.what << ": a member ran";
     }
   }
+  // `mpirun -np 2 landslide ARGS` in the test's folder, its output in two.log;
+  // the shell's exit status.
+  int two_ranks(const std::string& args) {
+    const std::string command = "cd '" + dir_.string() + "' && '" LANDSLIDE_MPIRUN
+                                "' --oversubscribe --allow-run-as-root -np 2 '" LANDSLIDE_BINARY
+                                "' " + args + " > two.log 2>&1";
+    return std::system(command.c_str());
+  }
   fs::path dir_;
 };
+
+// Why the MPI tests cannot run here ("" if they can).
+std::string no_mpi() {
+  if (!LANDSLIDE_WITH_MPI) return "built without MPI (CMake found none)";
+  if (std::string(LANDSLIDE_MPIRUN).empty() || !fs::exists(LANDSLIDE_MPIRUN))
+    return "no mpirun found (install openmpi-bin)";
+  return "";
+}
 
 std::vector<std::string> lines(const std::string& text) {
   std::vector<std::string> out;
@@ -71,16 +88,12 @@ std::vector<std::string> lines(const std::string& text) {
 }
 
 TEST_F(Sweep, OneAndTwoRanksWriteTheSameCsv) {
-  if (!LANDSLIDE_WITH_MPI) GTEST_SKIP() << "built without MPI (CMake found none)";
-  if (std::string(LANDSLIDE_MPIRUN).empty() || !fs::exists(LANDSLIDE_MPIRUN))
-    GTEST_SKIP() << "no mpirun found (install openmpi-bin)";
+  if (const std::string why = no_mpi(); !why.empty()) GTEST_SKIP() << why;
   write_sweep(friction_sweep());
   const auto one = landslide("sweep sweep.json --out one --threads 1", dir_);
   ASSERT_EQ(one.status, 0) << one.output;
-  const std::string two_ranks = "cd '" + dir_.string() + "' && '" LANDSLIDE_MPIRUN
-                                "' --oversubscribe --allow-run-as-root -np 2 '" LANDSLIDE_BINARY
-                                "' sweep sweep.json --out two --threads 1 > two.log 2>&1";
-  ASSERT_EQ(std::system(two_ranks.c_str()), 0) << read_text(dir_ / "two.log");
+  ASSERT_EQ(two_ranks("sweep sweep.json --out two --threads 1"), 0)
+      << read_text(dir_ / "two.log");
   const std::string log = read_text(dir_ / "two.log");
   EXPECT_NE(log.find("over 2 rank(s)"), std::string::npos) << log;
   EXPECT_NE(log.find("on rank 1"), std::string::npos) << log;  // rank 1 ran a member
@@ -267,6 +280,93 @@ TEST_F(Sweep, BadRandomFieldsAreRefusedBeforeAnyMemberRuns) {
        {"random_field.distribution = \"lognormal\": expected \"truncated-normal\""}},
   };
   expect_refused(cases);
+}
+
+// The first line of the output that starts with `start` ("" if none).
+std::string line_starting(const std::string& output, const std::string& start) {
+  for (const std::string& line : lines(output))
+    if (line.rfind(start, 0) == 0) return line;
+  return "";
+}
+
+json modulus_sweep() {
+  return {{"base", "base.json"},
+          {"axes", json::array({{{"path", "materials.soil.youngs_modulus"},
+                                 {"values", {2e7, 1e30}}}})}};
+}
+
+// E = 1e30 would take 2e15 steps: run's preflight refuses that member, so
+// the sweep stops before member 0 runs, and makes no member folder.
+TEST_F(Sweep, MemberRunWouldRefuseStopsTheSweepBeforeAnyMemberRuns) {
+  write_sweep(modulus_sweep());
+  const auto r = landslide("sweep sweep.json --out out --threads 1", dir_);
+  EXPECT_EQ(r.status, 2) << r.output;
+  const std::string error = line_starting(r.output, "error: ");
+  EXPECT_EQ(error.rfind("error: sweep.json: member 1 (materials.soil.youngs_modulus = 1e+30): ", 0),
+            0u) << r.output;
+  EXPECT_NE(error.find("steps (first dt = "), std::string::npos) << r.output;
+  EXPECT_NE(error.find("(or --allow-long)"), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find("member 0 of"), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(dir_ / "out")) << "a member ran or its folder was made";
+}
+
+// A frame too small for its annotations is refused for a painted member
+// (without ffmpeg or OSMesa the painting is refused for that member too).
+TEST_F(Sweep, PaintedMemberWithTooSmallFramesIsRefused) {
+  json base = base_scene();
+  base["output"]["image_size"] = {640, 360};
+  std::ofstream(dir_ / "base.json") << base.dump(1);
+  write_sweep({{"base", "base.json"},
+               {"axes", json::array({{{"path", "output.image_size.0"}, {"values", {640, 64}}}})}});
+  const auto r = landslide("sweep sweep.json --out out --threads 1 --paint 1", dir_);
+  EXPECT_EQ(r.status, 2) << r.output;
+  const std::string error = line_starting(r.output, "error: ");
+  EXPECT_EQ(error.rfind("error: sweep.json: member 1 (output.image_size.0 = 64): ", 0), 0u)
+      << r.output;
+  EXPECT_FALSE(fs::exists(dir_ / "out")) << "a member ran or its folder was made";
+}
+
+// --check reads and preflights every member, prints the sweep's estimate
+// and writes nothing.
+TEST_F(Sweep, CheckPrintsTheEstimateAndWritesNothing) {
+  write_sweep(friction_sweep());
+  const auto r = landslide("sweep sweep.json --out out --threads 1 --check", dir_);
+  EXPECT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("sweep estimate: 3 members to run, up to "), std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find(" point-steps"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("  wall time: up to about "), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("sweep.json: ok"), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find("member 0 of"), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(dir_ / "out")) << "--check wrote into --out";
+  write_sweep(modulus_sweep());
+  const auto refused = landslide("sweep sweep.json --out out --threads 1 --check", dir_);
+  EXPECT_EQ(refused.status, 2) << refused.output;
+  EXPECT_NE(refused.output.find("error: sweep.json: member 1 ("), std::string::npos)
+      << refused.output;
+}
+
+// --allow-long lets a member past the estimate's limits through, as it lets
+// `landslide run` (checked only: that member would run for days).
+TEST_F(Sweep, AllowLongLetsAMemberPastTheLimitsThrough) {
+  write_sweep(modulus_sweep());
+  const auto r = landslide("sweep sweep.json --out out --threads 1 --check --allow-long", dir_);
+  EXPECT_EQ(r.status, 0) << r.output;
+  EXPECT_EQ(line_starting(r.output, "warning: ").rfind("warning: sweep.json: member 1 (", 0), 0u)
+      << r.output;
+  EXPECT_FALSE(fs::exists(dir_ / "out")) << "--check wrote into --out";
+}
+
+// Under mpirun every rank stops, and the refusal is said once (rank 0's).
+TEST_F(Sweep, RefusalUnderMpiStopsEveryRankAndIsSaidOnce) {
+  if (const std::string why = no_mpi(); !why.empty()) GTEST_SKIP() << why;
+  write_sweep(modulus_sweep());
+  EXPECT_NE(two_ranks("sweep sweep.json --out out --threads 1"), 0);
+  const std::string log = read_text(dir_ / "two.log");
+  const std::size_t first = log.find("error: sweep.json: member 1 (");
+  ASSERT_NE(first, std::string::npos) << log;
+  EXPECT_EQ(log.find("error: sweep.json: member 1 (", first + 1), std::string::npos) << log;
+  EXPECT_FALSE(fs::exists(dir_ / "out")) << "a member ran or its folder was made";
 }
 
 }  // namespace
