@@ -9,6 +9,7 @@
 
 #include "app/commands.hpp"
 #include "app/new_command.hpp"
+#include "app/gallery_monte_carlo.hpp"
 #include "app/sweep_command.hpp"
 
 namespace {
@@ -114,8 +115,8 @@ int main(int argc, char** argv) {
 
   app::GalleryOptions gallery;
   CLI::App* gallery_cmd = cli.add_subcommand(
-      "gallery", "Regenerate the paper's figures (5, 6, 9-12), the phi = 20 animation and the four "
-      "friction angles side by side");
+      "gallery", "Regenerate the paper's figures (5, 6, 9-12), the phi = 20 animation, the four "
+      "friction angles side by side and (not with --quick) the Monte Carlo runout");
   gallery_cmd->add_option("--out", gallery.out, "Output directory")->required();
   gallery_cmd->add_option("--scenarios", gallery.scenarios,
                           "Folder of the paper-slope scenarios (default: scenarios)");
@@ -150,7 +151,10 @@ int main(int argc, char** argv) {
     return app::render_command(render);
   }
   if (*panel_cmd) return app::panel_command(panel);
-  if (*gallery_cmd) return app::gallery_command(gallery);
+  if (*gallery_cmd) {
+    const int status = app::gallery_command(gallery);
+    return status != app::kExitOk || gallery.quick ? status : app::gallery_monte_carlo(gallery);
+  }
   if (*validate_cmd) return app::validate_command(validate);
   if (*new_cmd) return app::new_command(made);
   if (*sweep_cmd) return app::sweep_command(sweep);

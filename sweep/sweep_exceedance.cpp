@@ -3,6 +3,7 @@
 // 2016): P(runout > L) over the samples of each combination of the axes.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 #include "render/line_plot.hpp"
@@ -38,7 +39,9 @@ void add_curves(render::LinePlot& plot, const Exceedance& e, render::Rgba colour
     lo.y[k] = std::max(0.0, e.p[k] - e.eps);
     hi.y[k] = std::min(1.0, e.p[k] + e.eps);
   }
-  hi.label = "95 % band (Dvoretzky-Kiefer-Wolfowitz), +-" + std::to_string(e.eps).substr(0, 5);
+  char eps[16];
+  std::snprintf(eps, sizeof eps, "%.3f", e.eps);
+  hi.label = "95 % band (Dvoretzky-Kiefer-Wolfowitz), +-" + std::string(eps);
   plot.curves.push_back(lo);
   plot.curves.push_back(hi);
   plot.curves.push_back(mid);

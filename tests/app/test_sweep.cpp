@@ -369,4 +369,25 @@ TEST_F(Sweep, RefusalUnderMpiStopsEveryRankAndIsSaidOnce) {
   EXPECT_FALSE(fs::exists(dir_ / "out")) << "a member ran or its folder was made";
 }
 
+// The shipped Monte Carlo example (100 samples of the paper's slope at 1661
+// points with a random friction angle) runs to its end: every sample comes
+// to rest, and the exceedance plot is drawn. About 90 s on one core.
+TEST(ShippedSweep, MonteCarloExampleRunsToItsEnd) {
+  const fs::path out = fs::temp_directory_path() / "landslide-sweep-monte-carlo";
+  fs::remove_all(out);
+  const auto r = landslide("sweep '" LANDSLIDE_SOURCE_DIR
+                           "/scenarios/sweeps/monte-carlo-phi20-n1661.json' --out '" +
+                               out.string() + "' --threads 1",
+                           fs::temp_directory_path());
+  ASSERT_EQ(r.status, 0) << r.output;
+  const auto rows = lines(read_text(out / "sweep.csv"));
+  ASSERT_EQ(rows.size(), 101u);
+  for (std::size_t k = 1; k < rows.size(); ++k) {
+    EXPECT_NE(rows[k].find(",finished,"), std::string::npos) << rows[k];
+    EXPECT_NE(rows[k].find(",true,"), std::string::npos) << "not at rest: " << rows[k];
+  }
+  EXPECT_TRUE(fs::exists(out / "sweep-exceedance.png"));
+  fs::remove_all(out);
+}
+
 }  // namespace
