@@ -1,7 +1,8 @@
 // `landslide gallery`: regenerates the paper's figures (5, 6, 9, 10, 11, 12),
 // an animation of the phi = 20 slide and one of the four friction angles side
-// by side from the committed scenarios. Each scenario is run once; an
-// observer keeps the states the figures need.
+// by side from the committed phi = 20 scene and the studies' sweep files
+// (gallery_studies.hpp). Each distinct scene is run once; an observer keeps
+// the states the figures need.
 #include <chrono>
 #include <cmath>
 #include <cstdint>
@@ -20,6 +21,7 @@
 #include "output/output_dir.hpp"
 #include "output/frames.hpp"
 #include "gallery/src/gallery_runs.hpp"
+#include "gallery/src/gallery_studies.hpp"
 #include "output/series_plot.hpp"
 #include "render/error.hpp"
 #include "render/font.hpp"
@@ -71,29 +73,35 @@ std::vector<const Frame*> quarters_of_the_slide(const RunResult& r) {
 
 std::string pts(const RunResult& r) { return std::to_string(r.points) + " points"; }
 
+// Figures 5, 6, 9 and 10, the series figure and the animation of one slide
+// are of this scene; Figures 11 and 12 are the studies' sweep files'.
+constexpr const char* kStageScene = "paper-slope-phi20.json";
+
 }  // namespace
 
 namespace {
 
 // What would stop the gallery, refused before any run: a missing --out or
-// scenarios folder, a scene that does not load, no ffmpeg, no painter.
-bool inputs_ready(const GalleryOptions& o, const fs::path& scenarios) {
+// scenarios folder, a scene or a study's sweep file (gallery_studies.hpp)
+// that does not load, no ffmpeg, no painter.
+bool inputs_ready(const GalleryOptions& o, const fs::path& scenarios, gallery::Studies& studies) {
   if (o.out.empty()) {
     std::cerr << "error: --out DIR is required\n";
     return false;
   }
   if (!scenarios_folder_found(scenarios.string(), !o.scenarios.empty(), "landslide gallery"))
     return false;
-  for (const char* f : {"paper-slope-phi20.json", "paper-slope-phi25.json",
-                        "paper-slope-phi15.json", "paper-slope-phi10.json",
-                        "paper-slope-phi20-n1661.json", "paper-slope-phi20-n28711.json",
-                        "paper-slope-phi20-n66787.json"}) {
-    try {
-      sim::load_scenario((scenarios / f).string());
-    } catch (const sim::ScenarioError& e) {
-      std::cerr << "error: " << e.what() << " (--scenarios DIR names the scenarios folder)\n";
-      return false;
-    }
+  auto refuse = [](const std::exception& e) {
+    std::cerr << "error: " << e.what() << " (--scenarios DIR names the scenarios folder)\n";
+    return false;
+  };
+  try {
+    sim::load_scenario((scenarios / kStageScene).string());
+    studies = gallery::read_studies(scenarios);
+  } catch (const sim::ScenarioError& e) {
+    return refuse(e);
+  } catch (const sweep::SweepError& e) {
+    return refuse(e);
   }
   std::string why;
   if (!render::ffmpeg_available(&why)) {
@@ -124,7 +132,7 @@ void timed(Gallery& g, const std::string& name, const std::function<void()>& mak
 // points, its gravity stage and its slide.
 void stage_figures(Gallery& g, bool quick, const std::string& q) {
   timed(g, "fig05-vertical-stress.png", [&] {
-    RunResult& r = g.run("paper-slope-phi20.json", true);
+    RunResult& r = g.run_file(kStageScene, true);
     g.figure("fig05-vertical-stress.png",
              "Fig. 5: vertical stress after the gravity stage (phi = 25 deg until the trigger)" + q,
              {{&r, &r.gravity_end}},
@@ -132,7 +140,7 @@ void stage_figures(Gallery& g, bool quick, const std::string& q) {
              Field::StressYY);
   });
   timed(g, "fig06-horizontal-displacement.png", [&] {
-    RunResult& r = g.run("paper-slope-phi20.json", true);
+    RunResult& r = g.run_file(kStageScene, true);
     g.figure("fig06-horizontal-displacement.png",
              "Fig. 6: horizontal displacement after the gravity stage (phi = 25 deg until the trigger)" + q,
              {{&r, &r.gravity_end}},
@@ -141,7 +149,7 @@ void stage_figures(Gallery& g, bool quick, const std::string& q) {
              Field::DisplacementX);
   });
   timed(g, "fig09-slide.png", [&] {
-    RunResult& r = g.run("paper-slope-phi20.json", true);
+    RunResult& r = g.run_file(kStageScene, true);
     std::vector<std::pair<const RunResult*, const Frame*>> panels;
     std::vector<std::string> caps;
     for (const Frame* f : quarters_of_the_slide(r)) {
@@ -155,7 +163,7 @@ void stage_figures(Gallery& g, bool quick, const std::string& q) {
              panels, caps, Field::DisplacementX);
   });
   timed(g, "fig10-relative-yield-3s.png", [&] {
-    RunResult& r = g.run("paper-slope-phi20.json", true);
+    RunResult& r = g.run_file(kStageScene, true);
     std::string note;
     const Frame* f = state_at(r, 3.0, note);
     g.figure("fig10-relative-yield-3s.png",
@@ -165,56 +173,64 @@ void stage_figures(Gallery& g, bool quick, const std::string& q) {
              Field::RelativeYield);
   });
   timed(g, "series-paper-slope-phi20.png", [&] {
-    g.with_series("series-paper-slope-phi20.png", g.run("paper-slope-phi20.json", true));
+    g.with_series("series-paper-slope-phi20.png", g.run_file(kStageScene, true));
   });
 }
 
-// Figures 11 and 12 and the side-by-side animation: the resolution and the
-// friction-angle studies.
-void study_figures(Gallery& g, bool quick, const std::string& q, const fs::path& out) {
+// Whether an earlier panel already shows run r: under --quick every member
+// of the resolution study runs at h = 1.127 m, so they are one run (the
+// same physics) and get one panel.
+bool shown(const std::vector<std::pair<const RunResult*, const Frame*>>& panels,
+           const RunResult& r) {
+  for (const auto& p : panels)
+    if (p.first == &r) return true;
+  return false;
+}
+
+// Figure 11: the resolution study, the members of its sweep file.
+void resolution_figure(Gallery& g, const gallery::Study& study, const std::string& q) {
   timed(g, "fig11-resolutions.png", [&] {
     std::vector<std::pair<const RunResult*, const Frame*>> panels;
     std::vector<std::string> caps;
-    const std::vector<std::string> files =
-        quick ? std::vector<std::string>{"paper-slope-phi20.json"}
-                : std::vector<std::string>{"paper-slope-phi20-n1661.json", "paper-slope-phi20.json",
-                                           "paper-slope-phi20-n28711.json",
-                                           "paper-slope-phi20-n66787.json"};
-    for (const std::string& f : files) {
-      RunResult& r = g.run(f, f == "paper-slope-phi20.json");
+    for (const sweep::Member& m : study.sweep.members) {
+      RunResult& r = g.run(gallery::member_scenario(study, m));
+      if (shown(panels, r)) continue;
       panels.push_back({&r, &r.slide_end});
       caps.push_back(pts(r) + ", h = " + fmt(r.scenario.cell_size, 3) + " m: " + ending(r));
     }
+    const std::string phi =
+        gallery::scene_value(study.sweep.members.front(), gallery::kTriggerFrictionAngle);
     g.figure("fig11-resolutions.png",
-             "Fig. 11: end of the slide at four resolutions, phi = 20 deg" + q, panels, caps,
-             Field::DisplacementX);
+             "Fig. 11: end of the slide at " + gallery::count_word(study.sweep.members.size()) +
+                 " resolutions" + (phi.empty() ? "" : ", phi = " + phi + " deg") + q,
+             panels, caps, Field::DisplacementX);
   });
-  const std::vector<std::string> angles = {"25", "20", "15", "10"};
-  auto friction_run = [&](const std::string& phi) -> RunResult& {
-    const std::string f = "paper-slope-phi" + phi + ".json";
-    return g.run(f, f == "paper-slope-phi20.json");
-  };
+}
+
+// Figure 12 and the side-by-side animation: the friction-angle study, the
+// members of its sweep file.
+void friction_figures(Gallery& g, const gallery::Study& study, const std::string& q,
+                      const fs::path& out) {
+  const std::string count = gallery::count_word(study.sweep.members.size());
+  std::vector<const RunResult*> runs;
+  std::vector<std::string> labels;  // "phi = 25 deg, 8370 points"
   timed(g, "fig12-friction-angles.png", [&] {
     std::vector<std::pair<const RunResult*, const Frame*>> panels;
     std::vector<std::string> caps;
-    for (const std::string& phi : angles) {
-      RunResult& r = friction_run(phi);
+    for (const sweep::Member& m : study.sweep.members) {
+      const RunResult& r = g.run(gallery::member_scenario(study, m));
+      runs.push_back(&r);
+      labels.push_back("phi = " + gallery::scene_value(m, study.path) + " deg, " + pts(r));
       panels.push_back({&r, &r.slide_end});
-      caps.push_back("phi = " + phi + " deg, " + pts(r) + ": " + ending(r));
+      caps.push_back(labels.back() + ": " + ending(r));
     }
-    g.figure("fig12-friction-angles.png", "Fig. 12: end of the slide, four friction angles" + q,
+    g.figure("fig12-friction-angles.png", "Fig. 12: end of the slide, " + count + " friction angles" + q,
              panels, caps, Field::DisplacementX);
   });
   const std::string side_by_side = "anim-friction-angles-displacement-x";
   timed(g, side_by_side + ".mp4/.gif", [&] {
-    std::vector<const RunResult*> runs;
-    std::vector<std::string> labels;
-    for (const std::string& phi : angles) {
-      runs.push_back(&friction_run(phi));
-      labels.push_back("phi = " + phi + " deg, " + pts(*runs.back()));
-    }
     gallery::write_side_by_side(runs, labels,
-                                "The slide at four friction angles: horizontal displacement" + q,
+                                "The slide at " + count + " friction angles: horizontal displacement" + q,
                                 out / ".work" / side_by_side, out, side_by_side);
   });
 }
@@ -223,7 +239,8 @@ void study_figures(Gallery& g, bool quick, const std::string& q, const fs::path&
 
 int gallery_command(const GalleryOptions& o) {
   const fs::path scenarios = o.scenarios.empty() ? fs::path("scenarios") : fs::path(o.scenarios);
-  if (!inputs_ready(o, scenarios)) return kExitBadInput;
+  gallery::Studies studies;
+  if (!inputs_ready(o, scenarios, studies)) return kExitBadInput;
   const fs::path out(o.out);
   const auto total = Clock::now();
   try {
@@ -231,7 +248,8 @@ int gallery_command(const GalleryOptions& o) {
     Gallery g(scenarios, out, o.quick);
     const std::string q = o.quick ? " [quick: h = 1.127 m]" : "";
     stage_figures(g, o.quick, q);
-    study_figures(g, o.quick, q, out);
+    resolution_figure(g, studies.resolutions, q);
+    friction_figures(g, studies.friction_angles, q, out);
     fs::remove_all(out / ".work");
     for (const std::string& base : {std::string("anim-paper-slope-phi20-displacement-x"),
                                     std::string("anim-friction-angles-displacement-x")})

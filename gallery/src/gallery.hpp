@@ -8,7 +8,9 @@ namespace app {
 
 // `landslide gallery`: the paper's figures 5, 6, 9, 10, 11, 12 (PNG), an
 // animation of the phi = 20 slide and one of the four friction angles side by
-// side, regenerated from the committed scenarios.
+// side, regenerated from the committed phi = 20 scene and, for Figures 11
+// and 12, the members of scenarios/sweeps/fig11-resolutions.json and
+// fig12-friction-angles.json.
 struct GalleryOptions {
   std::string out;        // directory
   std::string scenarios;  // "" : ./scenarios

@@ -1,6 +1,7 @@
-// The gallery's runs: each committed scenario run once, its states kept for
-// the figures (gallery_observer.hpp), its gravity stage shared with the
-// scenes whose stages match (as --state-cache does, in memory).
+// The gallery's runs: each distinct scene (a committed scenario, or a member
+// of a study's sweep file) run once, its states kept for the figures
+// (gallery_observer.hpp), its gravity stage shared with the scenes whose
+// stages match (as --state-cache does, in memory).
 #pragma once
 
 #include <chrono>
@@ -28,29 +29,45 @@ inline double seconds_since(Clock::time_point t) {
   return std::chrono::duration<double>(Clock::now() - t).count();
 }
 
+// What the gallery paints and keeps of every run, whatever its scene asks:
+// displacement-x frames of its dynamic stages every 0.5 s, no VTK states;
+// --quick runs it at h = 1.127 m.
+inline void use_gallery_output(sim::Scenario& s, bool quick) {
+  if (quick) s.cell_size = 1.127;
+  s.output.vtk = "none";
+  s.output.frame_interval = 0.5;
+  s.output.fields = {"displacement-x"};
+  s.output.ranges.clear();
+  // The domain is 116 m x 20 m: a low page keeps the panels free of empty bands.
+  s.output.image_size = {1280, 560};
+  std::vector<std::string> stages;
+  for (const sim::StageSpec& st : s.stages)
+    if (st.type == sim::StageType::Dynamic) stages.push_back(st.name);
+  s.output.frame_stages = stages;
+}
+
 class Gallery {
  public:
   Gallery(fs::path scenarios, fs::path out, bool quick)
       : scenarios_(std::move(scenarios)), out_(std::move(out)), quick_(quick) {}
 
-  // Runs `file` (once; later calls return the same result).
-  RunResult& run(const std::string& file, bool animate = false) {
-    auto it = runs_.find(file);
+  // Runs the scene `file` of the scenarios folder (see run()).
+  RunResult& run_file(const std::string& file, bool animate = false) {
+    return run(sim::load_scenario((scenarios_ / file).string()), animate);
+  }
+
+  // Runs `scenario` with the gallery's output settings, once: a later call
+  // whose scene has the same physics (sim::stage_prefix_key over all its
+  // stages, the key of --state-cache) returns the same result, whether it
+  // came from a scene file or a sweep's member (its name is not in the key).
+  RunResult& run(sim::Scenario scenario, bool animate = false) {
+    use_gallery_output(scenario, quick_);
+    const std::uint64_t key = sim::stage_prefix_key(scenario, scenario.stages.size());
+    auto it = runs_.find(key);
     if (it != runs_.end()) return *it->second;
     auto r = std::make_unique<RunResult>();
-    r->scenario = sim::load_scenario((scenarios_ / file).string());
+    r->scenario = std::move(scenario);
     sim::Scenario& s = r->scenario;
-    if (quick_) s.cell_size = 1.127;
-    s.output.vtk = "none";
-    s.output.frame_interval = 0.5;
-    s.output.fields = {"displacement-x"};
-    s.output.ranges.clear();
-    // The domain is 116 m x 20 m: a low page keeps the panels free of empty bands.
-    s.output.image_size = {1280, 560};
-    std::vector<std::string> stages;
-    for (const sim::StageSpec& st : s.stages)
-      if (st.type == sim::StageType::Dynamic) stages.push_back(st.name);
-    s.output.frame_stages = stages;
     std::unique_ptr<FrameRecorder> recorder;
     std::unique_ptr<SeriesRecorder> series;
     const fs::path work = out_ / ".work" / s.name;
@@ -103,7 +120,7 @@ class Gallery {
       fs::remove_all(work);
     }
     run_wall_ += r->wall;
-    return *runs_.emplace(file, std::move(r)).first->second;
+    return *runs_.emplace(key, std::move(r)).first->second;
   }
 
   // One page: the panels of `field` from `frames`, one colour range over all.
@@ -169,8 +186,8 @@ class Gallery {
   double run_wall() const { return run_wall_; }
   std::vector<std::string> failures() const {
     std::vector<std::string> f;
-    for (const auto& [file, r] : runs_)
-      if (!r->failed.empty()) f.push_back(file + ": " + r->failed);
+    for (const auto& [key, r] : runs_)
+      if (!r->failed.empty()) f.push_back(r->scenario.name + ": " + r->failed);
     return f;
   }
   bool quick() const { return quick_; }
@@ -183,7 +200,7 @@ class Gallery {
 
   fs::path scenarios_, out_;
   bool quick_;
-  std::map<std::string, std::unique_ptr<RunResult>> runs_;
+  std::map<std::uint64_t, std::unique_ptr<RunResult>> runs_;  // by stage_prefix_key
   std::map<std::uint64_t, std::string> gravity_states_;
   std::unique_ptr<FramePainter> painter_;
   double run_wall_ = 0;

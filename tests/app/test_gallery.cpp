@@ -1,21 +1,25 @@
-// `landslide gallery` end to end, on coarse copies of the seven committed
-// paper-slope scenes (h = 2 m, about 500 points, 4.5 s of slide; phi = 25
-// stops after 2 s so the side-by-side animation holds its last frame): every
-// figure and both animations are written, the 2x2 figures have four panels,
-// the side-by-side animation has a page every 0.5 s of the longest slide
-// (when ffprobe is there to count them), and nothing temporary is left. What
-// the figures show at the paper's resolutions is looked at in
-// gallery/README.md, not here; their physics is what tests/regression/ guards.
+// `landslide gallery` end to end, on a coarse copy of the committed phi = 20
+// scene (h = 2 m, about 500 points, at most 4.5 s of slide) and the studies'
+// sweep files over it: the friction-angle study as shipped, the resolution
+// study at coarse cell sizes. Every figure and both animations are written,
+// the 2x2 figures have four panels, the side-by-side animation has a page
+// every 0.5 s of the longest slide (when ffprobe is there to count them), and
+// nothing temporary is left. The folder holds no other scene, so the
+// figures of the studies can only come from the sweep files. What the
+// figures show at the paper's resolutions is looked at in gallery/README.md,
+// not here; their physics is what tests/regression/ guards.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <string>
 
 #include <nlohmann/json.hpp>
 
 #include "app/commands.hpp"
+#include "gallery/src/gallery_studies.hpp"
 #include "output/frames.hpp"
 #include "render/png_io.hpp"
 #include "render/subprocess.hpp"
@@ -24,24 +28,53 @@
 namespace {
 
 namespace fs = std::filesystem;
+using nlohmann::json;
 
-const char* const kScenes[] = {"paper-slope-phi20.json",        "paper-slope-phi25.json",
-                               "paper-slope-phi15.json",        "paper-slope-phi10.json",
-                               "paper-slope-phi20-n1661.json",  "paper-slope-phi20-n28711.json",
-                               "paper-slope-phi20-n66787.json"};
 constexpr double kSlide = 4.5;  // s; the longest slide of the copies
 const char* const kSideBySide = "anim-friction-angles-displacement-x";
+const char* const kResolutions = "sweeps/fig11-resolutions.json";
+const char* const kFrictionAngles = "sweeps/fig12-friction-angles.json";
 
-void write_coarse_copy(const std::string& name, const fs::path& dir) {
-  std::ifstream in(fs::path(LANDSLIDE_SOURCE_DIR) / "scenarios" / name);
-  nlohmann::json s = nlohmann::json::parse(in);
+json read_json(const fs::path& file) {
+  std::ifstream in(file);
+  return json::parse(in);
+}
+
+// paper-slope-phi20.json at h = 2 m with at most kSlide s of slide, and the
+// shipped sweep files, the resolution study's cell sizes made coarse.
+fs::path write_coarse_scenarios(const fs::path& root) {
+  const fs::path source = fs::path(LANDSLIDE_SOURCE_DIR) / "scenarios", dir = root / "scenarios";
+  fs::create_directories(dir / "sweeps");
+  json s = read_json(source / "paper-slope-phi20.json");
   s["grid"]["cell_size"] = 2.0;
-  for (nlohmann::json& stage : s["stages"])
+  for (json& stage : s["stages"])
     if (stage["type"] == "dynamic") {
-      stage["duration"] = name == "paper-slope-phi25.json" ? 2.0 : kSlide;
+      stage["duration"] = kSlide;
       stage["stop_at_rest"]["min_time"] = 2.0;
     }
-  std::ofstream(dir / name) << s.dump(1);
+  std::ofstream(dir / "paper-slope-phi20.json") << s.dump(1);
+  json resolutions = read_json(source / kResolutions);
+  resolutions["axes"][0]["values"] = {2.6, 2.4, 2.2, 2.0};
+  std::ofstream(dir / kResolutions) << resolutions.dump(1);
+  fs::copy_file(source / kFrictionAngles, dir / kFrictionAngles);
+  return dir;
+}
+
+// write_coarse_scenarios with the friction-angle study's sweep file edited.
+fs::path with_friction_study(const fs::path& root, const std::function<void(json&)>& edit) {
+  const fs::path scenarios = write_coarse_scenarios(root);
+  json study = read_json(scenarios / kFrictionAngles);
+  edit(study);
+  std::ofstream(scenarios / kFrictionAngles) << study.dump(1);
+  return scenarios;
+}
+
+// An empty folder for one test's files.
+fs::path fresh_root(const std::string& test) {
+  const fs::path root =
+      fs::temp_directory_path() / ("landslide-gallery-" + test + "-" + std::to_string(::getpid()));
+  fs::remove_all(root);
+  return root;
 }
 
 // Frames of an mp4 as ffprobe counts them; -1 without ffprobe.
@@ -58,15 +91,12 @@ int mp4_frames(const fs::path& mp4) {
 TEST(Gallery, EveryFigureAndBothAnimationsFromCoarseScenes) {
   if (!render::ffmpeg_available(nullptr))
     GTEST_SKIP() << "ffmpeg (with libx264, gif, palettegen) is not available";
-  const fs::path root =
-      fs::temp_directory_path() / ("landslide-gallery-test-" + std::to_string(::getpid()));
-  fs::remove_all(root);
-  fs::create_directories(root / "scenarios");
-  for (const char* name : kScenes) write_coarse_copy(name, root / "scenarios");
+  const fs::path root = fresh_root("test");
+  const fs::path scenarios = write_coarse_scenarios(root);
   const fs::path out = root / "gallery";
   app::GalleryOptions o;
   o.out = out.string();
-  o.scenarios = (root / "scenarios").string();
+  o.scenarios = scenarios.string();
   ASSERT_EQ(app::gallery_command(o), app::kExitOk);
 
   // Panels are 960 px wide: one column, or two.
@@ -109,24 +139,20 @@ TEST(Gallery, EveryFigureAndBothAnimationsFromCoarseScenes) {
 }
 
 // A scene that fails at its first step (a fixed time step 100 times the
-// stable one) leaves no state at all: its panels are empty plots captioned
-// FAILED, every figure is still written, and the command exits 1.
+// stable one), here the base of the friction-angle study, leaves no state at
+// all: its panels are empty plots captioned FAILED, every figure is still
+// written, and the command exits 1.
 TEST(Gallery, ARunThatFailsBeforeAnyStateStillGivesEveryFigure) {
   if (!render::ffmpeg_available(nullptr)) GTEST_SKIP() << "ffmpeg is not available";
-  const fs::path root =
-      fs::temp_directory_path() / ("landslide-gallery-failed-" + std::to_string(::getpid()));
-  fs::remove_all(root);
-  fs::create_directories(root / "scenarios");
-  for (const char* name : kScenes) write_coarse_copy(name, root / "scenarios");
-  const fs::path phi10 = root / "scenarios" / "paper-slope-phi10.json";
-  std::ifstream in(phi10);
-  nlohmann::json s = nlohmann::json::parse(in);
-  in.close();
+  const fs::path root = fresh_root("failed");
+  const fs::path scenarios =
+      with_friction_study(root, [](json& study) { study["base"] = "../failing.json"; });
+  json s = read_json(scenarios / "paper-slope-phi20.json");
   s["time_step"] = {{"fixed", 0.5}};
-  std::ofstream(phi10) << s.dump(1);
+  std::ofstream(scenarios / "failing.json") << s.dump(1);
   app::GalleryOptions o;
   o.out = (root / "gallery").string();
-  o.scenarios = (root / "scenarios").string();
+  o.scenarios = scenarios.string();
   EXPECT_EQ(app::gallery_command(o), app::kExitFailed);
   for (const char* fig : {"fig05-vertical-stress.png", "fig06-horizontal-displacement.png",
                           "fig09-slide.png", "fig10-relative-yield-3s.png",
@@ -135,11 +161,51 @@ TEST(Gallery, ARunThatFailsBeforeAnyStateStillGivesEveryFigure) {
   fs::remove_all(root);
 }
 
-// A scenarios folder without the seven scenes: exit 2 before anything runs.
-TEST(GalleryCommand, MissingScenesAreBadInputAndNothingIsWritten) {
-  const fs::path root =
-      fs::temp_directory_path() / ("landslide-gallery-bad-" + std::to_string(::getpid()));
+// The studies are what their sweep files say: edit a file, and the gallery's
+// runs follow (values, their order, their number).
+TEST(GalleryStudies, FollowTheSweepFiles) {
+  const fs::path root = fresh_root("studies");
+  const fs::path scenarios =
+      with_friction_study(root, [](json& study) { study["axes"][0]["values"] = {30, 12.5}; });
+  const app::gallery::Studies s = app::gallery::read_studies(scenarios);
+  ASSERT_EQ(s.resolutions.sweep.members.size(), 4u);
+  EXPECT_EQ(s.resolutions.sweep.members[0].scenario.cell_size, 2.6);
+  EXPECT_EQ(s.resolutions.sweep.members[3].scenario.cell_size, 2.0);
+  const std::vector<sweep::Member>& friction = s.friction_angles.sweep.members;
+  ASSERT_EQ(friction.size(), 2u);
+  EXPECT_EQ(app::gallery::scene_value(friction[1], s.friction_angles.path), "12.5");
+  EXPECT_EQ(app::gallery::member_scenario(s.friction_angles, friction[1]).name,
+            "fig12-friction-angles member 1 [stages.1.set.friction_angle = 12.5]");
   fs::remove_all(root);
+}
+
+// A study's sweep file over another axis than the figure's: exit 2, naming
+// the file, the axis found and the one allowed, before anything runs.
+TEST(GalleryCommand, AStudyOverAnotherAxisIsBadInput) {
+  const fs::path root = fresh_root("axis");
+  const fs::path scenarios = with_friction_study(root, [](json& study) {
+    study["axes"][0] = {{"path", "stages.1.set.cohesion"}, {"values", {0, 1000}}};
+  });
+  try {
+    app::gallery::read_studies(scenarios);
+    ADD_FAILURE() << "a friction-angle study over the cohesion was read";
+  } catch (const sweep::SweepError& e) {
+    const std::string what = e.what();
+    for (const char* named : {"fig12-friction-angles.json: axes", "stages.1.set.friction_angle",
+                              "found: stages.1.set.cohesion"})
+      EXPECT_NE(what.find(named), std::string::npos) << what;
+  }
+  app::GalleryOptions o;
+  o.out = (root / "gallery").string();
+  o.scenarios = scenarios.string();
+  EXPECT_EQ(app::gallery_command(o), app::kExitBadInput);
+  EXPECT_FALSE(fs::exists(root / "gallery"));
+  fs::remove_all(root);
+}
+
+// A scenarios folder without the scene and the studies: exit 2 before anything runs.
+TEST(GalleryCommand, MissingScenesAreBadInputAndNothingIsWritten) {
+  const fs::path root = fresh_root("bad");
   fs::create_directories(root / "scenarios");
   app::GalleryOptions o;
   o.out = (root / "gallery").string();
