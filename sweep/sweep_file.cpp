@@ -90,18 +90,21 @@ Member make_member(const Sweep& s, const Json& base, int index, const std::set<i
   try {
     m.scenario = sim::parse_scenario(m.scene_text, label);
   } catch (const sim::ScenarioError& e) {
-    std::string values;
-    for (std::size_t k = 0; k < s.axes.size(); ++k)
-      values += (k ? ", " : "") + s.axes[k].path + " = " + m.values[k].dump();
-    if (!s.fields.fields.empty())
-      values += (values.empty() ? "sample " : ", sample ") + std::to_string(m.sample);
-    throw SweepError(s.file.string() + ": member " + std::to_string(index) + " (" + values +
-                     "): " + e.what());
+    throw SweepError(member_name(s, m) + ": " + e.what());
   }
   return m;
 }
 
 }  // namespace
+
+std::string member_name(const Sweep& s, const Member& m) {
+  std::string values;
+  for (std::size_t k = 0; k < s.axes.size(); ++k)
+    values += (k ? ", " : "") + s.axes[k].path + " = " + m.values[k].dump();
+  if (!s.fields.fields.empty())
+    values += (values.empty() ? "sample " : ", sample ") + std::to_string(m.sample);
+  return s.file.string() + ": member " + std::to_string(m.index) + " (" + values + ")";
+}
 
 fs::path member_dir(const fs::path& out, int index) {
   char name[16];

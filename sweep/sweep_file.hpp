@@ -49,6 +49,9 @@ struct Sweep {
   std::vector<Member> members;
 };
 
+// "SWEEP: member N (PATH = VALUE, ..., sample S)", as messages name a member.
+std::string member_name(const Sweep& sweep, const Member& member);
+
 // The folder of member `index` under the sweep's output folder: members/NNNN.
 std::filesystem::path member_dir(const std::filesystem::path& out, int index);
 

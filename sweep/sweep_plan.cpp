@@ -14,15 +14,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// "SWEEP: member N (PATH = VALUE, ...)": a member named as the sweep reader
-// names one whose scene it refuses.
-std::string member_name(const Sweep& s, const Member& m) {
-  std::string values;
-  for (std::size_t k = 0; k < s.axes.size(); ++k)
-    values += (k ? ", " : "") + s.axes[k].path + " = " + m.values[k].dump();
-  return s.file.string() + ": member " + std::to_string(m.index) + " (" + values + ")";
-}
-
 // The plan's wall time: rank 0 runs `first` while the others wait at the
 // barrier, then each rank its share of `rest`.
 double elapsed_seconds(const Plan& plan, const std::map<int, double>& seconds, int ranks) {
