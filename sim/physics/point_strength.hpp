@@ -6,8 +6,8 @@
 // Eqs. (20)-(23) with that point's c and phi, returned by the same Clausen
 // return (sim/physics/mohr_coulomb.hpp).
 //
-// A scene without a field never builds these arrays, and the step chooses
-// once per step, not per point, whether to read them (point_update.cpp).
+// A scene without a field never builds these arrays; the step sets a pointer
+// to them once per step, null without a field (point_update.cpp).
 #pragma once
 
 #include <cstddef>
