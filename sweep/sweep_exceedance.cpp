@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <limits>
 
 #include "render/line_plot.hpp"
 #include "render/png_io.hpp"
@@ -14,20 +13,11 @@ namespace sweep {
 
 namespace {
 
-using Json = nlohmann::json;
-
 constexpr double kConfidence = 0.95;
 
 render::Rgba lighter(render::Rgba c) {
   auto mix = [](unsigned char v) { return static_cast<unsigned char>((v + 2 * 255) / 3); };
   return {mix(c.r), mix(c.g), mix(c.b), 255};
-}
-
-std::string combination_label(const Sweep& s, const MemberResult& r) {
-  std::string label;
-  for (std::size_t k = 0; k < s.axes.size(); ++k)
-    label += (label.empty() ? "" : ", ") + s.axes[k].path + " = " + r.values[k].dump();
-  return label;
 }
 
 void add_curves(render::LinePlot& plot, const Exceedance& e, render::Rgba colour,
@@ -82,7 +72,7 @@ void write_exceedance_plot(const Sweep& s, const std::vector<MemberResult>& resu
     const Exceedance e = exceedance(runouts, kConfidence);
     if (e.n == 0) continue;
     const std::size_t group = first / samples;
-    add_curves(plot, e, curve_colour(group), combination_label(s, results[first]));
+    add_curves(plot, e, curve_colour(group), axes_label(s, results[first], s.axes.size()));
     xs.insert(xs.end(), e.x.begin(), e.x.end());
   }
   plot.x = render::axis_range(xs, 8);

@@ -15,13 +15,6 @@ namespace {
 using Json = nlohmann::json;
 
 
-// The other axes' values of a member, as the legend shows them.
-std::string others_label(const Sweep& s, const MemberResult& r, std::size_t axis) {
-  std::string label;
-  for (std::size_t k = 0; k < s.axes.size(); ++k)
-    if (k != axis) label += (label.empty() ? "" : ", ") + s.axes[k].path + " = " + r.values[k].dump();
-  return label;
-}
 
 double number_or_nan(const Json& v) {
   return v.is_number() ? v.get<double>() : std::numeric_limits<double>::quiet_NaN();
@@ -44,7 +37,7 @@ render::LinePlot axis_plot(const Sweep& s, const std::vector<MemberResult>& resu
   const int samples = s.fields.samples;
   for (std::size_t first = 0; first < results.size(); first += samples) {
     const MemberResult& r = results[first];
-    const std::string key = others_label(s, r, axis);
+    const std::string key = axes_label(s, r, axis);
     if (!curves.count(key)) order.push_back(key);
     render::Curve& c = curves[key];
     c.x.push_back(r.values[axis].get<double>());
@@ -69,6 +62,13 @@ render::LinePlot axis_plot(const Sweep& s, const std::vector<MemberResult>& resu
 }
 
 }  // namespace
+
+std::string axes_label(const Sweep& s, const MemberResult& r, std::size_t skip) {
+  std::string label;
+  for (std::size_t k = 0; k < s.axes.size(); ++k)
+    if (k != skip) label += (label.empty() ? "" : ", ") + s.axes[k].path + " = " + r.values[k].dump();
+  return label;
+}
 
 render::Rgba curve_colour(std::size_t k) {
   static const render::Rgba colours[] = {{31, 119, 180, 255}, {255, 127, 14, 255},

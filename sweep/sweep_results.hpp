@@ -56,6 +56,10 @@ struct Exceedance {
 };
 Exceedance exceedance(std::vector<double> runouts, double confidence);
 
+// "PATH = VALUE, ..." of a member's axes but axis `skip` (axes.size(): none
+// skipped), as the plots' legends name a curve.
+std::string axes_label(const Sweep& sweep, const MemberResult& result, std::size_t skip);
+
 // The colour of curve k of a sweep's plots (they cycle).
 render::Rgba curve_colour(std::size_t k);
 
