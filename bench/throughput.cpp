@@ -26,6 +26,9 @@
 #include <string>
 #include <vector>
 
+#include "bench/granular_column.hpp"
+#include "bench/memory_use.hpp"
+#include "bench/size_sweep.hpp"
 #include "sim/run/simulation.hpp"
 
 namespace {
@@ -40,70 +43,13 @@ struct Scene {
   sim::Scenario scenario;
 };
 
-sim::Scenario load(const std::string& name) {
-  return sim::load_scenario(LANDSLIDE_SOURCE_DIR "/scenarios/" + name + ".json");
-}
-
-// The granular column of issue 6 (CB-Geo MPM's comparison case): a 0.2 m x
-// 0.4 m Mohr-Coulomb column (phi = 30 deg, c = 0) against the left wall,
-// 2x2 points per cell, 25,600 points, collapsing under full gravity.
-sim::Scenario granular_column() {
-  sim::Scenario s = load("elastic-column");
-  s.name = "granular-column";
-  // (0.2 / h) (0.4 / h) 4 points = 25,600 gives h = 0.2 / sqrt(3200) = 3.536 mm.
-  s.cell_size = 0.2 / std::sqrt(3200.0);
-  s.domain_min = {0, 0};
-  s.domain_max = {1.0, 0.45};
-  const sim::Wall fixed{sim::BoundaryKind::Fixed, 0.0}, free{sim::BoundaryKind::Free, 0.0};
-  s.boundaries = {fixed, fixed, fixed, free};
-  sim::MaterialSpec m;
-  m.name = "sand";
-  m.model = sim::MaterialModel::MohrCoulomb;
-  m.density = 2650;
-  m.youngs_modulus = 0.84e6;
-  m.poisson_ratio = 0.3;
-  m.friction_angle = 30 * M_PI / 180;
-  m.critical_density = m.density;  // the granular regime on, as in the shipped scenes
-  s.materials = {m};
-  s.bodies[0].material = 0;
-  s.bodies[0].polygon = {{0, 0}, {0.2, 0}, {0.2, 0.4}, {0, 0.4}};
-  return s;
-}
-
-// The same column on a Coulomb friction base, mu = 0.5: what a friction wall
-// costs (sim/physics/wall_friction.hpp).
+// The granular column on a Coulomb friction base, mu = 0.5: what a friction
+// wall costs (sim/physics/wall_friction.hpp).
 sim::Scenario friction_column() {
-  sim::Scenario s = granular_column();
+  sim::Scenario s = bench::granular_column();
   s.name = "friction-column";
   s.boundaries.bottom = {sim::BoundaryKind::Friction, 0.5};
   return s;
-}
-
-template <typename T>
-double bytes(const std::vector<T>& v) {
-  return static_cast<double>(v.capacity() * sizeof(T));
-}
-
-// Bytes held by every std::vector in the world (keep in step with
-// sim/physics/world.hpp, sim/physics/particles.hpp and sim/physics/grid.hpp); the grid's in `grid`.
-double vector_bytes(const sim::World& w, double* grid) {
-  const sim::Particles& p = w.points;
-  double points = bytes(p.material) + bytes(p.yielded);
-  for (const auto* v : {&p.x, &p.y, &p.vx, &p.vy, &p.mass, &p.density, &p.sxx, &p.syy, &p.sxy,
-                        &p.szz, &p.x0, &p.y0, &p.ref_x, &p.ref_y})
-    points += bytes(*v);
-  const sim::Grid& g = w.grid;
-  double nodes = bytes(g.fix_x) + bytes(g.fix_y) + bytes(g.row_sums);
-  for (const auto* v : {&g.mass, &g.px, &g.py, &g.vx, &g.vy, &g.fx, &g.fy, &g.ax, &g.ay,
-                        &g.held_ax, &g.held_ay, &g.wall_gap_x, &g.wall_gap_y, &g.wall_impulse_x,
-                        &g.wall_impulse_y})
-    nodes += bytes(*v);
-  const double scratch = bytes(w.stencils) + bytes(w.bin_key) + bytes(w.order) +
-                         bytes(w.band_start) + bytes(w.thread_counts) + bytes(w.thread_window) + bytes(w.thread_totals) +
-                         bytes(w.thread_bands) + bytes(w.band_sums) + bytes(w.material_specs) +
-                         bytes(w.materials);
-  if (grid) *grid = nodes;
-  return points + nodes + scratch;
 }
 
 // Runs `steps` steps of the scene's slide (a dynamic stage under full gravity,
@@ -134,59 +80,31 @@ double run(sim::Scenario s, int threads, int steps, std::size_t& points, double&
   simulation.run(quiet);
   const double wall =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  if (world_bytes) *world_bytes = vector_bytes(simulation.world(), grid_bytes);
+  if (world_bytes) *world_bytes = bench::vector_bytes(simulation.world(), grid_bytes);
   return simulation.results().back().steps * static_cast<double>(points) / wall;
-}
-
-// Peak resident set of this process, bytes: VmHWM of /proc/self/status. It
-// belongs to the process's own memory map, so a child does not inherit its
-// parent's peak through the spawn (wait4's ru_maxrss does: a vfork-style
-// spawn runs on the parent's map until exec, and exec keeps that map's peak).
-double own_peak_rss() {
-  std::FILE* f = std::fopen("/proc/self/status", "r");
-  if (!f) return NAN;
-  char line[256];
-  double kib = NAN;
-  while (std::fgets(line, sizeof line, f))
-    if (std::sscanf(line, "VmHWM: %lf kB", &kib) == 1) break;
-  std::fclose(f);
-  return kib * 1024.0;
-}
-
-// Peak resident set, in bytes, of a child process (this program) that runs
-// scene `scene` for 20 steps on 1 thread, or only loads the scenes for -1.
-double child_peak_rss(int scene) {
-  char self[4096];
-  const ssize_t n = readlink("/proc/self/exe", self, sizeof self - 1);
-  if (n <= 0) return NAN;
-  self[n] = 0;
-  const std::string command =
-      "'" + std::string(self) + "' --peak-rss-child " + std::to_string(scene);
-  std::FILE* child = popen(command.c_str(), "r");
-  if (!child) return NAN;
-  double bytes = NAN;
-  if (std::fscanf(child, "%lf", &bytes) != 1) bytes = NAN;
-  return pclose(child) == 0 ? bytes : NAN;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
+  if (argc > 1 && std::string(argv[1]) == "--sizes") return bench::size_sweep(argc - 2, argv + 2);
+  if (argc > 2 && std::string(argv[1]) == "--sizes-rss-child")
+    return bench::size_sweep_rss_child(std::atoi(argv[2]));
   const bool child = argc > 2 && std::string(argv[1]) == "--peak-rss-child";
   const int steps = child ? 20 : argc > 1 ? std::atoi(argv[1]) : 300;
-  std::vector<Scene> scenes = {{"elastic column (16 cells)", load("elastic-column")},
-                               {"granular column, Mohr-Coulomb", granular_column()},
+  std::vector<Scene> scenes = {{"elastic column (16 cells)", bench::load_scene("elastic-column")},
+                               {"granular column, Mohr-Coulomb", bench::granular_column()},
                                {"granular column, friction base", friction_column()},
-                               {"paper slope phi=20, n1661", load("paper-slope-phi20-n1661")},
-                               {"paper slope phi=20, n8370", load("paper-slope-phi20")},
-                               {"paper slope phi=20, n28711", load("paper-slope-phi20-n28711")},
-                               {"paper slope phi=20, n66787", load("paper-slope-phi20-n66787")}};
+                               {"paper slope phi=20, n1661", bench::load_scene("paper-slope-phi20-n1661")},
+                               {"paper slope phi=20, n8370", bench::load_scene("paper-slope-phi20")},
+                               {"paper slope phi=20, n28711", bench::load_scene("paper-slope-phi20-n28711")},
+                               {"paper slope phi=20, n66787", bench::load_scene("paper-slope-phi20-n66787")}};
   if (child) {
     const int k = std::atoi(argv[2]);
     std::size_t points = 0;
     double dt = 0;
     if (k >= 0 && k < static_cast<int>(scenes.size())) run(scenes[k].scenario, 1, steps, points, dt);
-    std::printf("%.0f\n", own_peak_rss());
+    std::printf("%.0f\n", bench::own_peak_rss());
     return 0;
   }
   if (steps <= 0) {
@@ -206,14 +124,14 @@ int main(int argc, char** argv) {
   std::printf("granular column: 0.2 m x 0.4 m against the left wall, h = %.3g mm, 2x2 points per "
               "cell, uGIMP, Mohr-Coulomb phi = 30 deg, c = 0, psi = 0, E = 0.84 MPa, nu = 0.3, "
               "rho = 2650 kg/m^3, fixed walls, Courant 0.5\n",
-              granular_column().cell_size * 1e3);
+              bench::granular_column().cell_size * 1e3);
   std::printf("each figure: the best of %d runs (1 and 2 threads alternating); '2 thr. worst' the "
               "slowest, which shows how much this machine's speed varied\n",
               kRepeats);
   std::printf("%-32s %8s %10s %14s %14s %13s %16s %10s %10s %10s\n", "scene", "points", "dt [s]",
               "1 thread Mpt/s", "2 thr. Mpt/s", "2 thr. worst", "core-ns/pt-step", "World B/pt",
               "grid B/pt", "RSS B/pt");
-  const double baseline_rss = child_peak_rss(-1);
+  const double baseline_rss = bench::child_peak_rss("--peak-rss-child -1");
   for (std::size_t k = 0; k < scenes.size(); ++k) {
     if (scenes[k].label.find(filter) == std::string::npos) continue;
     std::size_t points = 0;
@@ -224,7 +142,7 @@ int main(int argc, char** argv) {
       two = std::max(two, rate);
       worst = std::min(worst, rate);
     }
-    const double rss = child_peak_rss(static_cast<int>(k)) - baseline_rss;
+    const double rss = bench::child_peak_rss("--peak-rss-child " + std::to_string(k)) - baseline_rss;
     std::printf("%-32s %8zu %10.3e %14.2f %14.2f %13.2f %12.1f %14.0f %10.0f %10.0f\n",
                 scenes[k].label.c_str(), points, dt, one / 1e6, two / 1e6, worst / 1e6, 2e9 / two,
                 world / points, grid / points, rss / points);

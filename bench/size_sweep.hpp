@@ -1,0 +1,13 @@
+// Issue 17's size sweep of bench/throughput (`throughput --sizes`): the
+// granular column from 25 k to 6.5 M points, 1 and 2 threads, against a
+// STREAM-like triad measured in the same run.
+#pragma once
+
+namespace bench {
+
+// argv after "--sizes"; returns the exit status.
+int size_sweep(int argc, char** argv);
+// The child of one row's peak-RSS measurement: prints its VmHWM in bytes.
+int size_sweep_rss_child(int refine);
+
+}  // namespace bench
