@@ -17,11 +17,12 @@ namespace sim {
 // and rows of nodes from phase to phase (sim/physics/bands.hpp), and the phases are
 // separated by barriers, not by starting new teams of threads. The transfers
 // are the paper's (FLIP-like increments) or APIC's (sim/physics/apic.hpp), chosen
-// once per step.
+// once per step. The team has no more threads than there are free cores
+// (sim/physics/team.hpp).
 void step(World& w, const StepInput& in, StepReport& report) {
   prepare_locate(w);
   const bool apic = w.transfer == TransferScheme::Apic;
-#pragma omp parallel
+#pragma omp parallel num_threads(team_size(w.team))
   {
     if (locate_and_sort(w)) {  // false on every thread if a point left the grid
       reset_grid(w);

@@ -12,6 +12,7 @@
 #include "sim/physics/particles.hpp"
 #include "sim/physics/point_strength.hpp"
 #include "sim/physics/spec.hpp"
+#include "sim/physics/team.hpp"
 
 namespace sim {
 
@@ -43,6 +44,7 @@ struct World {
   int bad_point = 0;              // first point off the grid (the number of points if none)
   std::vector<int> thread_bands;  // thread t owns bands [thread_bands[t], thread_bands[t+1])
   std::vector<double> band_sums;  // per band partial sums of the step's reductions
+  Team team;                      // the step's threads (sim/physics/team.hpp)
 };
 
 // Rows of base nodes per band. Two bands apart never share a node (a stencil

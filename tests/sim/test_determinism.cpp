@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <cstring>
 
+#include "sim/physics/team.hpp"
 #include "sim/run/simulation.hpp"
 #include "support.hpp"
 
@@ -19,6 +20,7 @@ std::uint64_t run_with_threads(const char* file, int threads) {
   s.output.frame_interval = 0;
   for (sim::StageSpec& stage : s.stages) stage.duration = std::min(stage.duration, 1.0);
   for (sim::StageSpec& stage : s.stages) stage.rest.enabled = false;
+  sim::follow_free_cores(false);  // two threads even on a loaded machine
   omp_set_num_threads(threads);
   sim::Simulation simulation(s);
   sim::Observer quiet;

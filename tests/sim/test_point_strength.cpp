@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "sim/physics/team.hpp"
 #include "sim/physics/mohr_coulomb.hpp"
 #include "sim/run/simulation.hpp"
 #include "sim/scene/random_field.hpp"
@@ -147,6 +148,7 @@ TEST(PointStrength, OneAndTwoThreadsGiveTheSameState) {
   const sim::Scenario s = field_slope(1.0);
   std::uint64_t hash[2] = {0, 0};
   for (int threads : {1, 2}) {
+    sim::follow_free_cores(false);  // two threads even on a loaded machine
     omp_set_num_threads(threads);
     sim::Simulation sim(s);
     sim::Observer quiet;

@@ -1,0 +1,80 @@
+#include "sim/physics/team.hpp"
+
+#include <dirent.h>
+#include <omp.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cstdio>
+#include <string>
+
+namespace sim {
+
+namespace {
+
+std::atomic<bool> following{true};
+
+// Runnable tasks on the whole machine: the fourth field of /proc/loadavg,
+// "running/total". -1 where it cannot be read.
+int runnable_tasks() {
+  std::FILE* f = std::fopen("/proc/loadavg", "r");
+  if (!f) return -1;
+  double one, five, fifteen;
+  int running = -1, total = 0;
+  if (std::fscanf(f, "%lf %lf %lf %d/%d", &one, &five, &fifteen, &running, &total) != 5)
+    running = -1;
+  std::fclose(f);
+  return running;
+}
+
+// This process's threads in state R (running or runnable): the one counting,
+// and any worker still spinning at OpenMP's barrier.
+int own_runnable_threads() {
+  DIR* dir = opendir("/proc/self/task");
+  if (!dir) return -1;
+  int running = 0;
+  while (const dirent* entry = readdir(dir)) {
+    if (entry->d_name[0] == '.') continue;
+    const std::string path = std::string("/proc/self/task/") + entry->d_name + "/stat";
+    std::FILE* f = std::fopen(path.c_str(), "r");
+    if (!f) continue;
+    char line[512];
+    if (std::fgets(line, sizeof line, f)) {
+      // The state follows the command name, which is in parentheses.
+      const std::string text = line;
+      const std::size_t close = text.rfind(')');
+      if (close != std::string::npos && close + 2 < text.size() && text[close + 2] == 'R') ++running;
+    }
+    std::fclose(f);
+  }
+  closedir(dir);
+  return running;
+}
+
+}  // namespace
+
+int free_cores() {
+  const int asked = omp_get_max_threads();
+  const int all = runnable_tasks(), own = own_runnable_threads();
+  const long cores = sysconf(_SC_NPROCESSORS_ONLN);
+  if (all < 0 || own < 0 || cores < 1) return asked;
+  const int others = std::max(0, all - own);
+  return static_cast<int>(std::clamp<long>(cores - others, 1, asked));
+}
+
+void follow_free_cores(bool follow) { following = follow; }
+
+int team_size(Team& team) {
+  const int asked = omp_get_max_threads();
+  if (asked == 1 || !following) return asked;
+  const auto now = std::chrono::steady_clock::now();
+  if (asked != team.asked || now - team.counted >= kRecount) {
+    team.asked = asked;
+    team.threads = free_cores();
+    team.counted = now;
+  }
+  return team.threads;
+}
+
+}  // namespace sim

@@ -1,0 +1,57 @@
+// The step's team (sim/physics/team.hpp): never more threads than asked for,
+// never fewer than one, and one core fewer while another process spins.
+#include <gtest/gtest.h>
+#include <omp.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <thread>
+
+#include "sim/physics/team.hpp"
+
+namespace {
+
+TEST(Team, OneThreadAskedForIsOne) {
+  omp_set_num_threads(1);
+  sim::Team team;
+  EXPECT_EQ(sim::team_size(team), 1);
+}
+
+TEST(Team, BetweenOneAndTheThreadsAskedFor) {
+  for (int asked : {2, 3, 8}) {
+    omp_set_num_threads(asked);
+    const int free = sim::free_cores();
+    EXPECT_GE(free, 1) << asked;
+    EXPECT_LE(free, asked) << asked;
+  }
+}
+
+TEST(Team, ABusyProcessTakesACore) {
+  const long cores = sysconf(_SC_NPROCESSORS_ONLN);
+  if (cores < 2) GTEST_SKIP() << "one core: nothing to give up";
+  omp_set_num_threads(static_cast<int>(cores));
+  const pid_t busy = fork();
+  ASSERT_GE(busy, 0);
+  if (busy == 0) {
+    volatile unsigned long spin = 0;
+    for (;;) ++spin;
+  }
+  std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  const int free = sim::free_cores();
+  kill(busy, SIGKILL);
+  waitpid(busy, nullptr, 0);
+  EXPECT_LT(free, cores) << "a process spinning beside this one left all " << cores
+                         << " cores counted free";
+}
+
+TEST(Team, FixedWhenNotFollowingFreeCores) {
+  omp_set_num_threads(2);
+  sim::follow_free_cores(false);
+  sim::Team team;
+  EXPECT_EQ(sim::team_size(team), 2);
+  sim::follow_free_cores(true);
+}
+
+}  // namespace
