@@ -61,9 +61,9 @@ void compute_stencils(World& w, int first_block, int end_block, int* window) {
       Stencil& st = w.stencils[first + l];
       st.base_i = static_cast<int>(base_i[l]);
       st.base_j = static_cast<int>(base_j[l]);
-      st.wx = Lane4{wx[0][l], wx[1][l], wx[2][l], 0.0};
-      st.dx = Lane4{dx[0][l], dx[1][l], dx[2][l], 0.0};
       for (int a = 0; a < 3; ++a) {
+        st.wx[a] = wx[a][l];
+        st.dx[a] = dx[a][l];
         st.wy[a] = wy[a][l];
         st.dy[a] = dy[a][l];
       }

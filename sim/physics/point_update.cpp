@@ -28,7 +28,7 @@ double update_point_stress(World& w, int p, double dt, const MohrCoulomb* own) {
   Lane4 lxx{}, lxy{}, lyx{}, lyy{};
   for (int b = 0; b < 3; ++b) {
     const int row = g.node(st.base_i, st.base_j + b);
-    const Lane4 gx = st.dx * st.wy[b], gy = st.wx * st.dy[b];
+    const Lane4 gx = lanes3(st.dx) * st.wy[b], gy = lanes3(st.wx) * st.dy[b];
     const Lane4 vx = load4(&g.vx[row]), vy = load4(&g.vy[row]);
     lxx += vx * gx;
     lxy += vx * gy;
@@ -70,8 +70,8 @@ void scatter_point_force(World& w, int p, const Vec2& gravity) {
   const double mgx = pts.mass[p] * gravity[0], mgy = pts.mass[p] * gravity[1];
   for (int b = 0; b < 3; ++b) {
     const int row = g.node(st.base_i, st.base_j + b);
-    const Lane4 S = st.wx * st.wy[b];
-    const Lane4 gx = st.dx * st.wy[b], gy = st.wx * st.dy[b];  // grad S_ip
+    const Lane4 S = lanes3(st.wx) * st.wy[b];
+    const Lane4 gx = lanes3(st.dx) * st.wy[b], gy = lanes3(st.wx) * st.dy[b];  // grad S_ip
     // f_int = -sigma_p . grad S_ip V_p, Eq. (16); f_ext = m_p b S_ip, Eq. (17).
     store4(&g.fx[row], load4(&g.fx[row]) + (-V * (sxx * gx + sxy * gy) + S * mgx));
     store4(&g.fy[row], load4(&g.fy[row]) + (-V * (sxy * gx + syy * gy) + S * mgy));
@@ -127,7 +127,7 @@ void grid_to_points(World& w, const StepInput& in) {
       Lane4 sax{}, say{}, svx{}, svy{}, swx{}, swy{};
       for (int b = 0; b < 3; ++b) {
         const int row = g.node(st.base_i, st.base_j + b);
-        const Lane4 S = st.wx * st.wy[b];
+        const Lane4 S = lanes3(st.wx) * st.wy[b];
         sax += S * load4(&g.ax[row]);
         say += S * load4(&g.ay[row]);
         swx += S * load4(&g.held_ax[row]);

@@ -63,7 +63,7 @@ void points_to_grid(World& w) {
       const double m = pts.mass[p], mvx = m * pts.vx[p], mvy = m * pts.vy[p];
       for (int b = 0; b < 3; ++b) {
         const int row = g.node(st.base_i, st.base_j + b);
-        const Lane4 S = st.wx * st.wy[b];                   // S_ip, Eq. (12)
+        const Lane4 S = lanes3(st.wx) * st.wy[b];                   // S_ip, Eq. (12)
         store4(&g.mass[row], load4(&g.mass[row]) + S * m);  // Eq. (26)
         store4(&g.px[row], load4(&g.px[row]) + S * mvx);    // Eq. (27)
         store4(&g.py[row], load4(&g.py[row]) + S * mvy);
