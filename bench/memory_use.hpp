@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -13,13 +14,16 @@
 
 namespace bench {
 
-template <typename T>
-double bytes(const std::vector<T>& v) {
+template <typename T, typename A>
+double bytes(const std::vector<T, A>& v) {
   return static_cast<double>(v.capacity() * sizeof(T));
 }
 
-// Bytes held by every std::vector in the world (keep in step with
-// sim/physics/world.hpp, sim/physics/particles.hpp and sim/physics/grid.hpp); the grid's in `grid`.
+// Bytes the solver's state takes: every std::vector in the world (keep in
+// step with sim/physics/world.hpp, particles.hpp and grid.hpp), the grid's
+// arrays counted over the window of nodes the last step touched, as only
+// the pages a step writes take memory (sim/physics/node_array.hpp). The
+// grid's share goes to `grid`.
 inline double vector_bytes(const sim::World& w, double* grid) {
   const sim::Particles& p = w.points;
   double points = bytes(p.material) + bytes(p.yielded);
@@ -27,15 +31,17 @@ inline double vector_bytes(const sim::World& w, double* grid) {
                         &p.szz, &p.x0, &p.y0, &p.ref_x, &p.ref_y})
     points += bytes(*v);
   const sim::Grid& g = w.grid;
-  double nodes = bytes(g.fix_x) + bytes(g.fix_y) + bytes(g.row_sums);
+  double per_node = 2 * sizeof(std::uint8_t);  // fix_x, fix_y
   for (const auto* v : {&g.mass, &g.px, &g.py, &g.vx, &g.vy, &g.fx, &g.fy, &g.ax, &g.ay,
                         &g.held_ax, &g.held_ay, &g.wall_gap_x, &g.wall_gap_y, &g.wall_impulse_x,
                         &g.wall_impulse_y})
-    nodes += bytes(*v);
+    if (!v->empty()) per_node += sizeof(double);
+  const double window = double(g.i_end - g.i_begin) * double(g.j_end - g.j_begin);
+  const double nodes = per_node * window + bytes(g.row_sums);
   const double scratch = bytes(w.stencils) + bytes(w.bin_key) + bytes(w.order) +
-                         bytes(w.band_start) + bytes(w.thread_counts) + bytes(w.thread_window) + bytes(w.thread_totals) +
-                         bytes(w.thread_bands) + bytes(w.band_sums) + bytes(w.material_specs) +
-                         bytes(w.materials);
+                         bytes(w.band_start) + bytes(w.thread_counts) + bytes(w.thread_window) +
+                         bytes(w.thread_totals) + bytes(w.thread_bands) + bytes(w.band_sums) +
+                         bytes(w.material_specs) + bytes(w.materials);
   if (grid) *grid = nodes;
   return points + nodes + scratch;
 }

@@ -14,6 +14,12 @@ void wall_holds(const Wall& wall, bool& normal, bool& tangential) {
   tangential = wall.kind == BoundaryKind::Fixed;
 }
 
+// Sets a node's flag where a wall holds it; a free node's flag is not
+// written, so its page of flags stays untouched (node_array.hpp).
+void hold(std::uint8_t& flag, bool held) {
+  if (held) flag = 1;
+}
+
 // Cells needed to cover a length; a length that is a whole number of cells up
 // to round-off does not get an extra cell.
 int cells_covering(double length, double h) {
@@ -34,11 +40,12 @@ Grid make_grid(const GridSpec& s) {
   g.ny = cells_y + 2 * pad + 1;
   g.stride = g.nx + 1;
   const std::size_t n = static_cast<std::size_t>(g.stride) * g.ny;
+  // Zeros that take no memory until written (node_array.hpp).
   for (auto* v : {&g.mass, &g.px, &g.py, &g.vx, &g.vy, &g.fx, &g.fy, &g.ax, &g.ay, &g.held_ax,
                   &g.held_ay})
-    v->assign(n, 0.0);
-  g.fix_x.assign(n, 0);
-  g.fix_y.assign(n, 0);
+    v->resize(n);
+  g.fix_x.resize(n);
+  g.fix_y.resize(n);
 
   // Walls act on the nodes on their line and on every padding node beyond it,
   // so material that reaches a wall cannot pass through it.
@@ -49,23 +56,23 @@ Grid make_grid(const GridSpec& s) {
       const int k = g.node(i, j);
       if (i <= left) {
         wall_holds(s.boundaries.left, normal, tangential);
-        g.fix_x[k] |= normal;
-        g.fix_y[k] |= tangential;
+        hold(g.fix_x[k], normal);
+        hold(g.fix_y[k], tangential);
       }
       if (i >= right) {
         wall_holds(s.boundaries.right, normal, tangential);
-        g.fix_x[k] |= normal;
-        g.fix_y[k] |= tangential;
+        hold(g.fix_x[k], normal);
+        hold(g.fix_y[k], tangential);
       }
       if (j <= bottom) {
         wall_holds(s.boundaries.bottom, normal, tangential);
-        g.fix_y[k] |= normal;
-        g.fix_x[k] |= tangential;
+        hold(g.fix_y[k], normal);
+        hold(g.fix_x[k], tangential);
       }
       if (j >= top) {
         wall_holds(s.boundaries.top, normal, tangential);
-        g.fix_y[k] |= normal;
-        g.fix_x[k] |= tangential;
+        hold(g.fix_y[k], normal);
+        hold(g.fix_x[k], tangential);
       }
     }
   }
@@ -81,10 +88,8 @@ Grid make_grid(const GridSpec& s) {
     g.friction_walls.back().mu = sides[k]->friction;
   }
   if (!g.friction_walls.empty()) {
-    g.wall_gap_x.assign(n, 0.0);
-    g.wall_gap_y.assign(n, 0.0);
-    g.wall_impulse_x.assign(n, 0.0);
-    g.wall_impulse_y.assign(n, 0.0);
+    for (auto* v : {&g.wall_gap_x, &g.wall_gap_y, &g.wall_impulse_x, &g.wall_impulse_y})
+      v->resize(n);
   }
   return g;
 }

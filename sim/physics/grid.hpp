@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "sim/physics/node_array.hpp"
 #include "sim/physics/spec.hpp"
 
 namespace sim {
@@ -32,21 +33,21 @@ struct Grid {
 
   // Per node, indexed j * stride + i: mass and momentum (Eqs. 26, 27), velocity
   // p/m, force (Eqs. 16, 17) and acceleration f/m.
-  std::vector<double> mass, px, py, vx, vy, fx, fy, ax, ay;
+  NodeArray<double> mass, px, py, vx, vy, fx, fy, ax, ay;
   // The part of (ax, ay) that walls make: all of a held component's
   // acceleration (its force is zero), 0 for a free one.
-  std::vector<double> held_ax, held_ay;
+  NodeArray<double> held_ax, held_ay;
   // Velocity components held at zero by the walls (1 = fixed).
-  std::vector<std::uint8_t> fix_x, fix_y;
+  NodeArray<std::uint8_t> fix_x, fix_y;
   // Walls with Coulomb friction; empty in a scene without them, which then
   // pays nothing for them.
   std::vector<FrictionWall> friction_walls;
   // With friction walls only: per node, the smallest gap between a side or
   // wall line and the edge of a point's domain that weights the node, along
   // x (left and right walls) and y (bottom and top); see wall_friction.hpp.
-  std::vector<double> wall_gap_x, wall_gap_y;
+  NodeArray<double> wall_gap_x, wall_gap_y;
   // The step's normal impulse at each friction-wall node (sim/physics/wall_friction.cpp).
-  std::vector<double> wall_impulse_x, wall_impulse_y;
+  NodeArray<double> wall_impulse_x, wall_impulse_y;
 
   // Nodes that particles touched this step: [i_begin, i_end) x [j_begin, j_end).
   // Every nodal loop runs over this window only, so empty air costs nothing.

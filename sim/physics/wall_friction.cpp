@@ -59,7 +59,7 @@ NodeView view(Grid& g, const FrictionWall& wall, int k) {
   return {g.py[k], g.px[k], g.vy[k], g.vx[k], g.ay[k], g.ax[k], g.fy[k], g.fx[k]};
 }
 
-std::vector<double>& impulses(Grid& g, const FrictionWall& wall) {
+NodeArray<double>& impulses(Grid& g, const FrictionWall& wall) {
   return wall.axis == 0 ? g.wall_impulse_x : g.wall_impulse_y;
 }
 
@@ -89,7 +89,7 @@ void scatter_wall_gaps(World& w, int band) {
       if (base >= wall.last || base + 2 < wall.first) continue;  // the stencil misses the wall
       const double at = wall.axis == 0 ? w.points.x[p] : w.points.y[p];
       const double gap = wall.into * (wall.line - at) - lp;
-      std::vector<double>& gaps = wall.axis == 0 ? g.wall_gap_x : g.wall_gap_y;
+      NodeArray<double>& gaps = wall.axis == 0 ? g.wall_gap_x : g.wall_gap_y;
       for (int b = 0; b < 3; ++b)
         for (int a = 0; a < 3; ++a) {
           double& here = gaps[g.node(st.base_i + a, st.base_j + b)];
@@ -101,8 +101,8 @@ void scatter_wall_gaps(World& w, int band) {
 
 void friction_walls_on_momentum(Grid& g, int first, int last) {
   for (const FrictionWall& wall : g.friction_walls) {
-    std::vector<double>& impulse = impulses(g, wall);
-    const std::vector<double>& gaps = wall.axis == 0 ? g.wall_gap_x : g.wall_gap_y;
+    NodeArray<double>& impulse = impulses(g, wall);
+    const NodeArray<double>& gaps = wall.axis == 0 ? g.wall_gap_x : g.wall_gap_y;
     for_wall_nodes(g, wall, first, last, [&](int k, int row) {
       if (!(gaps[k] <= 0.0 && g.mass[k] > 0.0)) {
         impulse[k] = kNoContact;
@@ -159,7 +159,7 @@ double slide_or_stick(const FrictionWall& wall, NodeView n, double m, double imp
 void friction_walls_on_update(Grid& g, int first, int last, double dt) {
   const auto& walls = g.friction_walls;
   for (const FrictionWall& wall : walls) {
-    const std::vector<double>& impulse = impulses(g, wall);
+    const NodeArray<double>& impulse = impulses(g, wall);
     for_wall_nodes(g, wall, first, last, [&](int k, int row) {
       if (impulse[k] == kNoContact) return;
       g.row_sums[row * kRowSums + kRowFrictionWork] +=
