@@ -11,15 +11,16 @@
 #include <vector>
 
 #include "sim/run/simulation.hpp"
+#include "sim/scene/memory_budget.hpp"
 
 namespace app {
 
 // Measured figures the estimate is built on (README.md, "What a run will
-// cost"): peak resident memory of `landslide run` against points and nodes,
-// and the bytes and painting time of a frame.
-constexpr double kBaseMemoryBytes = 64e6;      // the process with nothing to simulate
-constexpr double kBytesPerPoint = 400;         // 360..375 measured (VmHWM)
-constexpr double kBytesPerNode = 100;          // 94 measured
+// cost"): peak resident memory of `landslide run` against points and nodes
+// (sim/scene/memory_budget.hpp), and the bytes and painting time of a frame.
+using sim::kBaseMemoryBytes;
+using sim::kBytesPerNode;
+using sim::kBytesPerPoint;
 constexpr double kVtkBytesPerPoint = 280;      // 268 measured (ASCII .vtu)
 constexpr double kFrameBytesPerPixel = 0.3;    // PNG 0.08 measured; GIF copy and videos
 constexpr double kPaintSecondsPerPixel = 0.2e-6;  // 0.18 us measured, painting and encoding

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "sim/scene/memory_budget.hpp"
 #include "sim/scene/scenario.hpp"
 #include "sim/scene/scenario_json.hpp"
 
@@ -19,9 +20,7 @@ int material_index(const scenario_json::Node& name, const std::vector<MaterialSp
 OutputSpec parse_output(const scenario_json::Node& node, const std::vector<StageSpec>& stages);
 
 // Limits checked before anything is allocated: a scene asks for at most
-// kMaxPoints points and kMaxGridNodes grid nodes.
-constexpr double kMaxPoints = 20e6;
-constexpr double kMaxGridNodes = 50e6;
+// kMaxPoints points and kMaxGridNodes grid nodes (memory_budget.hpp).
 constexpr double kMaxFrames = 100000;  // per stage
 void check_memory_budget_of_grid(const scenario_json::Node& root, const Scenario& s);
 void check_memory_budget_of_points(const scenario_json::Node& root, const Scenario& s);
