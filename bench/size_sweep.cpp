@@ -28,6 +28,7 @@
 #include "bench/granular_column.hpp"
 #include "bench/memory_use.hpp"
 #include "sim/physics/step.hpp"
+#include "sim/physics/team.hpp"
 #include "sim/scene/seed.hpp"
 
 namespace bench {
@@ -114,10 +115,11 @@ int size_sweep(int argc, char** argv) {
   for (int a = 0; a < argc; ++a) {
     const std::string arg = argv[a];
     if (arg == "--busy") busy = true;
+    else if (arg == "--exact-threads") sim::follow_free_cores(false);
     else if (arg == "--up-to" && a + 1 < argc) up_to = std::atol(argv[++a]);
     else if (std::atol(arg.c_str()) > 0) steps = std::atol(arg.c_str());
     else {
-      std::fprintf(stderr, "throughput --sizes: '%s': expected [STEPS] [--up-to POINTS] [--busy]\n",
+      std::fprintf(stderr, "throughput --sizes: '%s': expected [STEPS] [--up-to POINTS] [--busy] [--exact-threads]\n",
                    arg.c_str());
       return 2;
     }

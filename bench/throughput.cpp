@@ -4,9 +4,10 @@
 //
 // Memory is measured two ways. "World B/pt": the bytes the solver's state
 // holds after the run, the capacities of every std::vector in sim::World
-// (points, grid, materials, per-step scratch) times their element sizes,
-// divided by the points; the grid's share is printed on its own, as it grows
-// with the domain, not the points. "RSS B/pt": the peak resident set of a
+// (points, materials, per-step scratch) times their element sizes, and the
+// grid's arrays over the window of nodes the last step touched (untouched
+// nodes take no memory, sim/physics/node_array.hpp), divided by the points;
+// the grid's share is printed on its own. "RSS B/pt": the peak resident set of a
 // child process that runs only that scene (20 steps, 1 thread; its VmHWM)
 // less that of a child that loads the scenes and runs none,
 // divided by the points: what the process really took, allocator and
@@ -15,6 +16,8 @@
 // Usage: throughput [STEPS [FILTER]]   (default 300 steps per scene and thread
 // count, best of kRepeats runs; with FILTER, only the scenes whose label
 // contains it)
+//        throughput --sizes [STEPS] [--up-to POINTS] [--busy]   (issue 17's size
+// sweep of the granular column, bench/size_sweep.cpp)
 #include <omp.h>
 #include <unistd.h>
 
