@@ -159,9 +159,9 @@ int size_sweep(int argc, char** argv) {
     kill(busy_pid, SIGKILL);
     waitpid(busy_pid, nullptr, 0);
   }
-  std::printf("World B/pt: std::vector capacities in sim::World (grid included); RSS B/pt: peak "
-              "RSS of a child that builds the row's world and steps it 3 times, less an idle "
-              "child's; bound: 2-thread triad bandwidth / World B/pt\n");
+  std::printf("World B/pt: std::vector capacities in sim::World, the grid's over the touched "
+              "window; RSS B/pt: peak RSS of a child that builds the row's world and steps it 3 "
+              "times, less an idle child's; bound: 2-thread triad bandwidth / World B/pt\n");
   return 0;
 }
 

@@ -16,8 +16,8 @@
 // Usage: throughput [STEPS [FILTER]]   (default 300 steps per scene and thread
 // count, best of kRepeats runs; with FILTER, only the scenes whose label
 // contains it)
-//        throughput --sizes [STEPS] [--up-to POINTS] [--busy]   (issue 17's size
-// sweep of the granular column, bench/size_sweep.cpp)
+//        throughput --sizes [STEPS] [--up-to POINTS] [--busy] [--exact-threads]
+// (issue 17's size sweep of the granular column, bench/size_sweep.cpp)
 #include <omp.h>
 #include <unistd.h>
 

@@ -14,12 +14,6 @@ void wall_holds(const Wall& wall, bool& normal, bool& tangential) {
   tangential = wall.kind == BoundaryKind::Fixed;
 }
 
-// Sets a node's flag where a wall holds it; a free node's flag is not
-// written, so its page of flags stays untouched (node_array.hpp).
-void hold(std::uint8_t& flag, bool held) {
-  if (held) flag = 1;
-}
-
 // Cells needed to cover a length; a length that is a whole number of cells up
 // to round-off does not get an extra cell.
 int cells_covering(double length, double h) {
@@ -56,23 +50,23 @@ Grid make_grid(const GridSpec& s) {
       const int k = g.node(i, j);
       if (i <= left) {
         wall_holds(s.boundaries.left, normal, tangential);
-        hold(g.fix_x[k], normal);
-        hold(g.fix_y[k], tangential);
+        g.fix_x[k] |= normal;
+        g.fix_y[k] |= tangential;
       }
       if (i >= right) {
         wall_holds(s.boundaries.right, normal, tangential);
-        hold(g.fix_x[k], normal);
-        hold(g.fix_y[k], tangential);
+        g.fix_x[k] |= normal;
+        g.fix_y[k] |= tangential;
       }
       if (j <= bottom) {
         wall_holds(s.boundaries.bottom, normal, tangential);
-        hold(g.fix_y[k], normal);
-        hold(g.fix_x[k], tangential);
+        g.fix_y[k] |= normal;
+        g.fix_x[k] |= tangential;
       }
       if (j >= top) {
         wall_holds(s.boundaries.top, normal, tangential);
-        hold(g.fix_y[k], normal);
-        hold(g.fix_x[k], tangential);
+        g.fix_y[k] |= normal;
+        g.fix_x[k] |= tangential;
       }
     }
   }

@@ -14,6 +14,7 @@
 
 #include <cstdlib>
 #include <new>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -21,6 +22,7 @@ namespace sim {
 
 template <class T>
 struct ZeroPages {
+  static_assert(std::is_trivial_v<T>, "zero pages hold numbers and flags, whose zero is all bits 0");
   using value_type = T;
   // Blocks of this size and more are mapped pages of their own; smaller
   // ones come zeroed from calloc.

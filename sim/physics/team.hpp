@@ -3,7 +3,7 @@
 // The step's phases meet at barriers (sim/physics/bands.hpp). A thread that
 // another program has pushed off its core holds every other thread at the
 // next barrier for a whole scheduler slice, so on a 2-core machine with one
-// busy core a 2-thread run fell to 0.61-0.72 of the same binary's 1-thread
+// busy core a 2-thread run fell to 0.54-0.91 of the same binary's 1-thread
 // rate (bench/throughput --sizes --busy, issue 17). The team therefore takes
 // no more threads than the cores other programs leave free, counted from
 // the kernel's runnable tasks, and looks again every kRecount of wall time.
