@@ -1,6 +1,7 @@
 // The stress update of one point, split in the steps the paper names:
 // Jaumann rotation (Eq. 24), elastic predictor (Eq. 21) and, for soil, the
-// Mohr-Coulomb return (Eqs. 20-23, Clausen et al.).
+// Mohr-Coulomb return (Eqs. 20-23, Clausen et al.). T is double or Lane8
+// (stress.hpp); M is MaterialConstants or its eight-point form.
 #pragma once
 
 #include "sim/physics/material.hpp"
@@ -13,9 +14,10 @@ namespace sim {
 // The paper calls its rate the Jaumann rate (Eq. 24); the spin terms are what
 // make it objective, so a rigidly spinning body keeps its principal stresses.
 // `spin` is W_xy dt = (dvx/dy - dvy/dx) dt / 2. sigma_zz does not rotate.
-inline void jaumann_rotate(Stress& s, double spin) {
-  const double dxy = spin * (s.yy - s.xx);
-  const double dn = 2.0 * spin * s.xy;
+template <class T>
+void jaumann_rotate(StressOf<T>& s, const T& spin) {
+  const T dxy = spin * (s.yy - s.xx);
+  const T dn = 2.0 * spin * s.xy;
   s.xx += dn;
   s.yy -= dn;
   s.xy += dxy;
@@ -23,8 +25,9 @@ inline void jaumann_rotate(Stress& s, double spin) {
 
 // Hooke's law in plane strain on a strain increment (Eq. 21 without the
 // plastic part): d sigma = lambda tr(d eps) I + 2 G d eps, d eps_zz = 0.
-inline void elastic_predictor(Stress& s, const StrainIncrement& de, const MaterialConstants& m) {
-  const double volumetric = m.lambda * (de.xx + de.yy);
+template <class T, class M>
+void elastic_predictor(StressOf<T>& s, const StrainOf<T>& de, const M& m) {
+  const T volumetric = m.lambda * (de.xx + de.yy);
   s.xx += volumetric + 2.0 * m.shear * de.xx;
   s.yy += volumetric + 2.0 * m.shear * de.yy;
   s.xy += 2.0 * m.shear * de.xy;

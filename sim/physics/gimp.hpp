@@ -100,6 +100,11 @@ inline Lane4 load4(const double* p) {
   return v;
 }
 inline void store4(double* p, const Lane4& v) { std::memcpy(p, &v, sizeof v); }
+inline Lane8 load8(const double* p) {
+  Lane8 v;
+  std::memcpy(&v, p, sizeof v);
+  return v;
+}
 // Lanes 0..2: a stencil row's three nodes; lane 3 is never part of a result.
 inline double sum3(const Lane4& v) { return (v[0] + v[1]) + v[2]; }
 
@@ -116,6 +121,35 @@ struct Stencil {
 };
 
 inline Lane4 lanes3(const double v[3]) { return Lane4{v[0], v[1], v[2], 0.0}; }
+
+// What a scatter phase adds to N nodal arrays over the 3x3 nodes of one base
+// node (three stencil rows, each with its fourth lane), kept in registers
+// while consecutive points share that base node, as the sorted points of a
+// band do (locate.cpp): the nodes are read and written once per base node,
+// not once per point. Each node still receives its terms one by one in the
+// points' order, so its sum has the same bits.
+template <int N>
+struct NodeSums {
+  double* arrays[N];
+  int stride = 0;
+  int base = -1;  // grid index of the base node held, -1 for none
+  Lane4 rows[N][3];
+
+  // Holds the rows of base node `at`, writing back the ones held before.
+  void hold(int at) {
+    if (at == base) return;
+    flush();
+    base = at;
+    for (int k = 0; k < N; ++k)
+      for (int b = 0; b < 3; ++b) rows[k][b] = load4(arrays[k] + base + b * stride);
+  }
+  void flush() {
+    if (base < 0) return;
+    for (int k = 0; k < N; ++k)
+      for (int b = 0; b < 3; ++b) store4(arrays[k] + base + b * stride, rows[k][b]);
+    base = -1;
+  }
+};
 
 // One axis of the stencils of one point (T = double, I = int) or eight
 // (T = Lane8, I = Int8). The base node is the first node that can carry a

@@ -26,13 +26,15 @@
 namespace sim {
 
 // Dunatunga & Kamrin's rule, applied after the density update of the step:
-// a point below its material's critical density carries no stress.
-// Returns true when the point is disconnected.
-inline bool disconnect_below_critical_density(double density, const MaterialConstants& m,
-                                              Stress& s) {
-  if (!(density < m.critical_density)) return false;
-  s = Stress{};
-  return true;
+// a point below its material's critical density carries no stress. T is
+// double or Lane8 (stress.hpp), M MaterialConstants or its eight-point form;
+// returns where the point is disconnected (a bool, or a lane mask).
+template <class T, class M>
+auto disconnect_below_critical_density(const T& density, const M& m, StressOf<T>& s) {
+  const auto disconnected = density < m.critical_density;
+  s = {disconnected ? T{} : s.xx, disconnected ? T{} : s.yy, disconnected ? T{} : s.xy,
+       disconnected ? T{} : s.zz};
+  return disconnected;
 }
 
 }  // namespace sim

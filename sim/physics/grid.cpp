@@ -70,6 +70,11 @@ Grid make_grid(const GridSpec& s) {
       }
     }
   }
+  const auto acts = [](const Wall& wall) { return wall.kind != BoundaryKind::Free; };
+  g.quiet_i_begin = acts(s.boundaries.left) ? left + 1 : 0;
+  g.quiet_i_end = acts(s.boundaries.right) ? right : g.nx;
+  g.quiet_j_begin = acts(s.boundaries.bottom) ? bottom + 1 : 0;
+  g.quiet_j_end = acts(s.boundaries.top) ? top : g.ny;
   const Wall* sides[4] = {&s.boundaries.left, &s.boundaries.right, &s.boundaries.bottom,
                          &s.boundaries.top};
   const FrictionWall lines[4] = {{0, -1.0, 0, 0, left + 1, g.origin_x + left * g.h},

@@ -53,6 +53,11 @@ struct Grid {
   // Every nodal loop runs over this window only, so empty air costs nothing.
   int i_begin = 0, i_end = 0, j_begin = 0, j_end = 0;
 
+  // The nodes no wall acts on: [quiet_i_begin, quiet_i_end) x
+  // [quiet_j_begin, quiet_j_end). Their held_ax, held_ay are zero, so a point
+  // whose stencil lies inside gets no velocity change from the walls.
+  int quiet_i_begin = 0, quiet_i_end = 0, quiet_j_begin = 0, quiet_j_end = 0;
+
   // Per-row partial sums, row_sums[row * kRowSums + which] (RowSum below),
   // added row by row in a fixed order.
   std::vector<double> row_sums;
@@ -64,6 +69,10 @@ struct Grid {
   int stride = 0;
 
   int node(int i, int j) const { return j * stride + i; }
+  // Whether a stencil with base node (i, j) reaches a node a wall acts on.
+  bool reaches_walls(int i, int j) const {
+    return i < quiet_i_begin || i + 3 > quiet_i_end || j < quiet_j_begin || j + 3 > quiet_j_end;
+  }
 };
 
 // What row_sums holds for each row of the window (the StepReport fields of

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <sstream>
 
 #include "sim/physics/bands.hpp"
@@ -49,23 +50,32 @@ void compute_stencils(World& w, int first_block, int end_block, int* window) {
   for (int blk = first_block; blk < end_block; ++blk) {
     const int first = 8 * blk, count = std::min(8, n - first);
     Lane8 x, y;
-    for (int l = 0; l < 8; ++l) {
-      x[l] = pts.x[first + std::min(l, count - 1)];
-      y[l] = pts.y[first + std::min(l, count - 1)];
+    if (count == 8) {
+      x = load8(&pts.x[first]);
+      y = load8(&pts.y[first]);
+    } else {
+      for (int l = 0; l < 8; ++l) {
+        x[l] = pts.x[first + std::min(l, count - 1)];
+        y[l] = pts.y[first + std::min(l, count - 1)];
+      }
     }
     Int8 base_i, base_j;
-    Lane8 wx[3], dx[3], wy[3], dy[3];
-    gimp_axis(x, g.origin_x, w.gimp, base_i, wx, dx);
-    gimp_axis(y, g.origin_y, w.gimp, base_j, wy, dy);
+    // The lanes of each weight side by side, so that a point's twelve
+    // doubles are read from one small block (the Stencil is a point's row).
+    Lane8 lanes[12];
+    gimp_axis(x, g.origin_x, w.gimp, base_i, &lanes[0], &lanes[3]);
+    gimp_axis(y, g.origin_y, w.gimp, base_j, &lanes[6], &lanes[9]);
+    double weights[12][8];
+    std::memcpy(weights, lanes, sizeof weights);
     for (int l = 0; l < count; ++l) {
       Stencil& st = w.stencils[first + l];
       st.base_i = static_cast<int>(base_i[l]);
       st.base_j = static_cast<int>(base_j[l]);
       for (int a = 0; a < 3; ++a) {
-        st.wx[a] = wx[a][l];
-        st.dx[a] = dx[a][l];
-        st.wy[a] = wy[a][l];
-        st.dy[a] = dy[a][l];
+        st.wx[a] = weights[a][l];
+        st.dx[a] = weights[3 + a][l];
+        st.wy[a] = weights[6 + a][l];
+        st.dy[a] = weights[9 + a][l];
       }
       const bool inside = std::isfinite(x[l]) && std::isfinite(y[l]) && st.base_i >= 0 &&
                           st.base_j >= 0 && st.base_i + 2 < g.nx && st.base_j + 2 < g.ny;

@@ -6,6 +6,8 @@
 // no tolerance. Formulas and region order: method notes, section 2.
 #include "sim/physics/mohr_coulomb.hpp"
 
+#include "sim/physics/mohr_coulomb_return.hpp"
+
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -14,9 +16,7 @@ namespace sim {
 
 namespace {
 
-double dot(const Principal3& a, const Principal3& b) {
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
+using mc_return::dot;
 
 Principal3 cross(const Principal3& a, const Principal3& b) {
   return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
@@ -98,40 +98,27 @@ MohrCoulomb MohrCoulomb::make(double E, double nu, double c, double phi, double 
   return mc;
 }
 
+// The one-point forms of the select-form templates (mohr_coulomb_return.hpp).
+
 namespace {
 
-// Mohr's circle of the in-plane stress: half the difference of the normal
-// stresses and the radius.
-double half_difference(const Stress& s) { return 0.5 * (s.xx - s.yy); }
-double circle_radius(const Stress& s) {
-  const double half = half_difference(s);
-  return std::sqrt(half * half + s.xy * s.xy);
+PrincipalStress to_principal(const mc_return::Sorted<double>& sorted, double cos2, double sin2) {
+  PrincipalStress p;
+  p.s = sorted.s;
+  p.zz_slot = sorted.zz_first ? 0 : (sorted.zz_at_least_second ? 1 : 2);
+  p.cos2 = cos2;
+  p.sin2 = sin2;
+  return p;
 }
 
-// The principal values alone, sorted; the directions (a division) are left
-// to principal_directions, which only a plastic return needs.
-void principal_values(const Stress& s, double radius, PrincipalStress& p) {
-  const double centre = 0.5 * (s.xx + s.yy);
-  const double hi = centre + radius, lo = centre - radius, zz = s.zz;
-  // Plane strain: sigma_zz is a principal stress too and may sort anywhere.
-  if (zz >= hi) {
-    p.s = {zz, hi, lo};
-    p.zz_slot = 0;
-  } else if (zz >= lo) {
-    p.s = {hi, zz, lo};
-    p.zz_slot = 1;
-  } else {
-    p.s = {hi, lo, zz};
-    p.zz_slot = 2;
-  }
+mc_return::Sorted<double> to_sorted(const PrincipalStress& p) {
+  return {p.s, p.zz_slot == 0, p.zz_slot <= 1};
 }
 
-void principal_directions(const Stress& s, double radius, PrincipalStress& p) {
-  if (radius > 0) {
-    const double inverse = 1 / radius;
-    p.cos2 = half_difference(s) * inverse;
-    p.sin2 = s.xy * inverse;
-  }
+ReturnRegion region_of(const mc_return::Regions<double>& r) {
+  if (r.apex) return ReturnRegion::Apex;
+  if (r.plane) return ReturnRegion::Plane;
+  return r.edge_s1_s2 ? ReturnRegion::EdgeS1EqS2 : ReturnRegion::EdgeS2EqS3;
 }
 
 }  // namespace
@@ -139,87 +126,34 @@ void principal_directions(const Stress& s, double radius, PrincipalStress& p) {
 PrincipalStress principal_stresses(const Stress& s) {
   // Closed-form 2x2 eigenpair (Mohr's circle): this runs for every point in
   // every step, where a general eigen-solver would cost far more.
-  PrincipalStress p;
-  const double radius = circle_radius(s);
-  principal_values(s, radius, p);
-  principal_directions(s, radius, p);
-  return p;
+  const double radius = mc_return::circle_radius(s);
+  double cos2, sin2;
+  mc_return::principal_directions(s, radius, cos2, sin2);
+  return to_principal(mc_return::principal_values(s, radius), cos2, sin2);
 }
 
 Stress from_principal(const PrincipalStress& p, const Principal3& v) {
-  // The first non-zz slot holds the value on the (cos theta, sin theta)
-  // direction, the second the one on the perpendicular direction. Writing
-  // v_a n n^T + v_b t t^T in double-angle form holds whichever of the two is
-  // larger, so the slots need no reordering.
-  const int a = p.zz_slot == 0 ? 1 : 0;
-  const int b = p.zz_slot == 2 ? 1 : 2;
-  const double centre = 0.5 * (v[a] + v[b]), half = 0.5 * (v[a] - v[b]);
-  return Stress{centre + half * p.cos2, centre - half * p.cos2, half * p.sin2, v[p.zz_slot]};
+  return mc_return::from_principal(to_sorted(p), p.cos2, p.sin2, v);
 }
 
 double yield_function(const MohrCoulomb& mc, const Principal3& s) {
-  return mc.k * s[0] - s[2] - mc.sigma_c;
+  return mc_return::yield_function<double>(mc, s);
 }
 
 double yield_function(const MohrCoulomb& mc, const Stress& s) {
   return yield_function(mc, principal_stresses(s).s);
 }
 
-namespace {
-
-// Clausen et al. (2007) regions for a sorted trial with f = f(s) > 0, tested
-// in the method notes' order; `s` becomes s_C.
-ReturnRegion plastic_return(const MohrCoulomb& mc, Principal3& s, double f) {
-  const Principal3 d{s[0] - mc.apex, s[1] - mc.apex, s[2] - mc.apex};  // s_B - s_a
-  // t_i is where the edge-i return would land; t_i >= 0 for both edges means
-  // either would land at or past the apex: the trial lies in the cone of
-  // return directions from the apex. With psi = 0 the gradients are
-  // deviatoric, the return keeps the mean stress, and no point of the
-  // surface has a mean above the apex: then t1 and t2 are positive multiples
-  // of (mean - apex) and this test sends exactly those trials to the apex
-  // (a tension cut-off; the only case without a plastic-flow solution).
-  const double t1 = dot(mc.project1, d), t2 = dot(mc.project2, d);
-  if (t1 >= 0 && t2 >= 0) {
-    s = {mc.apex, mc.apex, mc.apex};
-    return ReturnRegion::Apex;
-  }
-  // Between the two boundary planes the plane return stays sorted
-  // (s1 >= s2 >= s3), i.e. on the facet between the edges.
-  const double p1 = dot(mc.side1, d), p2 = dot(mc.side2, d);
-  if (p1 >= 0 && p2 <= 0) {
-    for (int i = 0; i < 3; ++i) s[i] -= f * mc.plane_corrector[i];
-    return ReturnRegion::Plane;
-  }
-  // s_a + t l puts the returned values exactly on the edge (s1 == s2 or
-  // s2 == s3 bit for bit) and exactly on the surface up to round-off in t.
-  if (p1 < 0) {
-    for (int i = 0; i < 3; ++i) s[i] = mc.apex + t1 * mc.edge1[i];
-    return ReturnRegion::EdgeS1EqS2;
-  }
-  for (int i = 0; i < 3; ++i) s[i] = mc.apex + t2 * mc.edge2[i];
-  return ReturnRegion::EdgeS2EqS3;
-}
-
-}  // namespace
-
 ReturnRegion mohr_coulomb_return_principal(const MohrCoulomb& mc, Principal3& s) {
   const double f = yield_function(mc, s);
   if (f <= 0) return ReturnRegion::Elastic;
-  return plastic_return(mc, s, f);
+  return region_of(mc_return::plastic_return(mc, s, f));
 }
 
 ReturnRegion mohr_coulomb_return(const MohrCoulomb& mc, Stress& s) {
-  PrincipalStress p;
-  const double radius = circle_radius(s);
-  principal_values(s, radius, p);
-  const double f = yield_function(mc, p.s);
-  if (f <= 0) return ReturnRegion::Elastic;  // untouched: no round trip through p
-  principal_directions(s, radius, p);
-  const ReturnRegion region = plastic_return(mc, p.s, f);
-  // Isotropic elasticity and isotropic f, g: the return changes principal
-  // values only, so they go back on the trial's principal directions.
-  s = from_principal(p, p.s);
-  return region;
+  mc_return::Regions<double> regions;
+  if (mc_return::return_in_place(mc, s, regions)) return ReturnRegion::Elastic;
+  return region_of(regions);
 }
 
 double relative_yield(const MohrCoulomb& mc, const Stress& s) {

@@ -7,24 +7,50 @@
 #include "sim/physics/bands.hpp"
 #include "sim/physics/constitutive.hpp"
 #include "sim/physics/granular.hpp"
+#include "sim/physics/mohr_coulomb_return.hpp"
 #include "sim/physics/step.hpp"
 
 namespace sim {
 
 namespace {
 
-// The stress update of point p (Eqs. 31, 24, 21-23, 25); returns its stress
-// work over the step (Eq. 3). `own`: each point's Mohr-Coulomb surface where
-// a random field set them (sim/physics/point_strength.hpp), null otherwise;
-// set once per step. One call site of the return, not one per kind of scene:
-// with two (a template parameter), a scene without a field stepped 5-7 %
-// slower (bench/throughput n8370, side by side), most likely because the
-// return was no longer inlined; with the pointer it steps as before.
-double update_point_stress(World& w, int p, double dt, const MohrCoulomb* own) {
-  Particles& pts = w.points;
-  const Grid& g = w.grid;
-  const Stencil& st = w.stencils[p];
-  // Velocity gradient L_ab = sum_i v_ia dS_ip/dx_b, a stencil row at a time.
+// The constants of eight points' materials, one lane each (the eight-point
+// form of MaterialConstants for constitutive.hpp and granular.hpp).
+struct MaterialLanes {
+  Lane8 lambda, shear, critical_density;
+  Int8 plastic;  // all bits set where the point's material is Mohr-Coulomb
+  MohrCoulombLanes mohr_coulomb;
+};
+
+Lane8 lanes_of(const MaterialConstants* const m[8], double MaterialConstants::*field) {
+  Lane8 v;
+  for (int l = 0; l < 8; ++l) v[l] = m[l]->*field;
+  return v;
+}
+
+// Remade only when a group of eight points has other materials or surfaces
+// than the group before: a scene of one soil and no random field makes it once.
+struct MaterialLanesCache {
+  MaterialLanes lanes;
+  const MaterialConstants* mat[8] = {};
+  const MohrCoulomb* mc[8] = {};
+
+  const MaterialLanes& get(const MaterialConstants* const m[8], const MohrCoulomb* const s[8]) {
+    if (std::equal(m, m + 8, mat) && std::equal(s, s + 8, mc)) return lanes;
+    std::copy(m, m + 8, mat);
+    std::copy(s, s + 8, mc);
+    lanes.lambda = lanes_of(m, &MaterialConstants::lambda);
+    lanes.shear = lanes_of(m, &MaterialConstants::shear);
+    lanes.critical_density = lanes_of(m, &MaterialConstants::critical_density);
+    for (int l = 0; l < 8; ++l) lanes.plastic[l] = m[l]->plastic ? -1 : 0;
+    lanes.mohr_coulomb = lanes_of(s);
+    return lanes;
+  }
+};
+
+// Velocity gradient L_ab = sum_i v_ia dS_ip/dx_b of one point, a stencil row
+// at a time; L = {xx, xy, yx, yy}.
+void velocity_gradient(const Grid& g, const Stencil& st, double L[4]) {
   Lane4 lxx{}, lxy{}, lyx{}, lyy{};
   for (int b = 0; b < 3; ++b) {
     const int row = g.node(st.base_i, st.base_j + b);
@@ -35,46 +61,95 @@ double update_point_stress(World& w, int p, double dt, const MohrCoulomb* own) {
     lyx += vy * gx;
     lyy += vy * gy;
   }
-  const double Lxx = sum3(lxx), Lxy = sum3(lxy), Lyx = sum3(lyx), Lyy = sum3(lyy);
-  const StrainIncrement de{dt * Lxx, dt * Lyy, 0.5 * dt * (Lxy + Lyx)};  // Eq. (31)
-  const MaterialConstants& mat = w.materials[pts.material[p]];
-  const Stress old{pts.sxx[p], pts.syy[p], pts.sxy[p], pts.szz[p]};
-  const double volume = pts.volume(p);  // at the start of the step
-  Stress s = old;
-  jaumann_rotate(s, 0.5 * dt * (Lxy - Lyx));  // Eq. (24)
-  elastic_predictor(s, de, mat);              // Eq. (21)
-  if (mat.plastic) {  // Eqs. (20)-(23)
-    const MohrCoulomb& mc = own ? own[p] : mat.mohr_coulomb;
-    pts.yielded[p] = mohr_coulomb_return(mc, s) != ReturnRegion::Elastic;
-  }
-  pts.density[p] *= std::exp(-(de.xx + de.yy));  // Eq. (25)
-  // Torn or loosened soil below its critical density carries no stress
-  // (Dunatunga & Kamrin 2015): it counts as yielded, flowing freely.
-  if (disconnect_below_critical_density(pts.density[p], mat, s)) pts.yielded[p] = 1;
-  pts.sxx[p] = s.xx;
-  pts.syy[p] = s.yy;
-  pts.sxy[p] = s.xy;
-  pts.szz[p] = s.zz;
-  // Stress power of Eq. (3) over the step, midpoint stress.
-  return volume * 0.5 * ((old.xx + s.xx) * de.xx + (old.yy + s.yy) * de.yy +
-                         2.0 * (old.xy + s.xy) * de.xy);
+  L[0] = sum3(lxx);
+  L[1] = sum3(lxy);
+  L[2] = sum3(lyx);
+  L[3] = sum3(lyy);
 }
 
-// Adds point p's internal and body forces to its nodes, Eqs. (16), (17).
-void scatter_point_force(World& w, int p, const Vec2& gravity) {
+// The stress update of points p[0..count), count <= 8, eight at a time
+// (Eqs. 31, 24, 21-23, 25), one lane each: lanes past count repeat the last
+// point and are not stored. Writes each point's stress work over the step
+// (Eq. 3) to work[]. `own`: each point's Mohr-Coulomb surface where a random
+// field set them (sim/physics/point_strength.hpp), null otherwise.
+//
+// Eight at once because the return's regions (mohr_coulomb_return.hpp) are
+// selects, not branches: the step took 45 ns per point in this phase one
+// point at a time (stress and force, granular column, one thread), much of
+// it on branches that a yielding soil takes at random.
+void update_eight_stresses(World& w, const int* p, int count, double dt, const MohrCoulomb* own,
+                           MaterialLanesCache& cache, double work[8]) {
+  Particles& pts = w.points;
+  int q[8];
+  const MaterialConstants* mat[8];
+  const MohrCoulomb* surface[8];
+  double L[4][8], old[4][8], density[8], mass[8], growth[8];
+  Int8 was_yielded;
+  for (int l = 0; l < 8; ++l) {
+    q[l] = p[std::min(l, count - 1)];
+    double gradient[4];
+    velocity_gradient(w.grid, w.stencils[q[l]], gradient);
+    for (int c = 0; c < 4; ++c) L[c][l] = gradient[c];
+    // exp(-tr d eps) of Eq. (25), the trace as the lanes below form it: taken
+    // here, one point at a time, where the call spills no vector registers.
+    growth[l] = std::exp(-(dt * gradient[0] + dt * gradient[3]));
+    old[0][l] = pts.sxx[q[l]];
+    old[1][l] = pts.syy[q[l]];
+    old[2][l] = pts.sxy[q[l]];
+    old[3][l] = pts.szz[q[l]];
+    density[l] = pts.density[q[l]];
+    mass[l] = pts.mass[q[l]];
+    was_yielded[l] = pts.yielded[q[l]];
+    mat[l] = &w.materials[pts.material[q[l]]];
+    surface[l] = own ? &own[q[l]] : &mat[l]->mohr_coulomb;
+  }
+  const MaterialLanes& m = cache.get(mat, surface);
+  const Lane8 Lxx = load8(L[0]), Lxy = load8(L[1]), Lyx = load8(L[2]), Lyy = load8(L[3]);
+  const StrainOf<Lane8> de{dt * Lxx, dt * Lyy, 0.5 * dt * (Lxy + Lyx)};  // Eq. (31)
+  const StressOf<Lane8> before{load8(old[0]), load8(old[1]), load8(old[2]), load8(old[3])};
+  const Lane8 rho = load8(density), volume = load8(mass) / rho;  // at the start of the step
+  StressOf<Lane8> s = before;
+  jaumann_rotate(s, 0.5 * dt * (Lxy - Lyx));  // Eq. (24)
+  elastic_predictor(s, de, m);                // Eq. (21)
+  StressOf<Lane8> returned = s;               // Eqs. (20)-(23), soil only
+  mc_return::Regions<Lane8> regions;
+  const Int8 elastic = mc_return::return_in_place(m.mohr_coulomb, returned, regions);
+  s = {m.plastic ? returned.xx : s.xx, m.plastic ? returned.yy : s.yy,
+       m.plastic ? returned.xy : s.xy, m.plastic ? returned.zz : s.zz};
+  Int8 yielded = m.plastic ? (elastic ? Int8{} : Int8{} + 1) : was_yielded;
+  const Lane8 rho_after = rho * load8(growth);  // Eq. (25)
+  // Torn or loosened soil below its critical density carries no stress
+  // (Dunatunga & Kamrin 2015): it counts as yielded, flowing freely.
+  yielded = disconnect_below_critical_density(rho_after, m, s) ? Int8{} + 1 : yielded;
+  // Stress power of Eq. (3) over the step, midpoint stress.
+  const Lane8 lane_work = volume * 0.5 * ((before.xx + s.xx) * de.xx + (before.yy + s.yy) * de.yy +
+                                          2.0 * (before.xy + s.xy) * de.xy);
+  for (int l = 0; l < count; ++l) {
+    pts.sxx[q[l]] = s.xx[l];
+    pts.syy[q[l]] = s.yy[l];
+    pts.sxy[q[l]] = s.xy[l];
+    pts.szz[q[l]] = s.zz[l];
+    pts.density[q[l]] = rho_after[l];
+    pts.yielded[q[l]] = static_cast<std::uint8_t>(yielded[l]);
+    work[l] = lane_work[l];
+  }
+}
+
+// Adds point p's internal and body forces to its nodes, Eqs. (16), (17):
+// `sums` holds the rows of fx and fy at p's base node.
+void scatter_point_force(World& w, int p, const Vec2& gravity, NodeSums<2>& sums) {
   const Particles& pts = w.points;
-  Grid& g = w.grid;
   const Stencil& st = w.stencils[p];
   const double V = pts.volume(p);
   const double sxx = pts.sxx[p], syy = pts.syy[p], sxy = pts.sxy[p];
   const double mgx = pts.mass[p] * gravity[0], mgy = pts.mass[p] * gravity[1];
+  sums.hold(w.grid.node(st.base_i, st.base_j));
   for (int b = 0; b < 3; ++b) {
-    const int row = g.node(st.base_i, st.base_j + b);
     const Lane4 S = lanes3(st.wx) * st.wy[b];
     const Lane4 gx = lanes3(st.dx) * st.wy[b], gy = lanes3(st.wx) * st.dy[b];  // grad S_ip
     // f_int = -sigma_p . grad S_ip V_p, Eq. (16); f_ext = m_p b S_ip, Eq. (17).
-    store4(&g.fx[row], load4(&g.fx[row]) + (-V * (sxx * gx + sxy * gy) + S * mgx));
-    store4(&g.fy[row], load4(&g.fy[row]) + (-V * (sxy * gx + syy * gy) + S * mgy));
+    sums.rows[0][b] += -V * (sxx * gx + sxy * gy) + S * mgx;
+    sums.rows[1][b] += -V * (sxy * gx + syy * gy) + S * mgy;
   }
 }
 
@@ -86,25 +161,43 @@ const MohrCoulomb* own_strength(const World& w) {
 
 double update_stress(World& w, double dt) {
   const MohrCoulomb* own = own_strength(w);
-  double work = 0;
-  for (std::size_t p = 0; p < w.points.size(); ++p)
-    work += update_point_stress(w, static_cast<int>(p), dt, own);
-  return work;
+  MaterialLanesCache cache;
+  const int n = static_cast<int>(w.points.size());
+  double total = 0;
+  for (int first = 0; first < n; first += 8) {
+    int p[8];
+    const int count = std::min(8, n - first);
+    for (int l = 0; l < count; ++l) p[l] = first + l;
+    double work[8];
+    update_eight_stresses(w, p, count, dt, own, cache, work);
+    for (int l = 0; l < count; ++l) total += work[l];
+  }
+  return total;
 }
 
-// One pass over the points for both: a point's new stress goes to its nodes
-// while its stencil and stress are still in cache. The nodal velocities the
-// stress update reads do not change in this phase.
+// One pass over the points for both: a group of points' new stress goes to
+// their nodes while their stencils and stresses are still in cache. The
+// nodal velocities the stress update reads do not change in this phase, so
+// grouping the points changes no result: each point's force is still added
+// in the band's order, and its work summed in that order.
 void update_stress_and_forces(World& w, const StepInput& in) {
   const MohrCoulomb* own = own_strength(w);
   scatter_own_bands(w, [&](int band) {
-    double work = 0;
-    for (int s = w.band_start[band]; s < w.band_start[band + 1]; ++s) {
-      const int p = w.order[s];
-      work += update_point_stress(w, p, in.dt, own);
-      scatter_point_force(w, p, in.gravity);
+    MaterialLanesCache cache;
+    NodeSums<2> forces{{w.grid.fx.data(), w.grid.fy.data()}, w.grid.stride};
+    double total = 0;
+    const int end = w.band_start[band + 1];
+    for (int s = w.band_start[band]; s < end; s += 8) {
+      const int count = std::min(8, end - s);
+      double work[8];
+      update_eight_stresses(w, &w.order[s], count, in.dt, own, cache, work);
+      for (int l = 0; l < count; ++l) {
+        total += work[l];
+        scatter_point_force(w, w.order[s + l], in.gravity, forces);
+      }
     }
-    w.band_sums[band * kBandSums + kInternalWork] = work;
+    forces.flush();
+    w.band_sums[band * kBandSums + kInternalWork] = total;
   });
 }
 
@@ -119,23 +212,28 @@ void grid_to_points(World& w, const StepInput& in) {
   double* const pvy = w.points.vy.data();
   const double* const mass = w.points.mass.data();
   const std::uint8_t* const material = w.points.material.data();
+  const int kinds = static_cast<int>(w.materials.size());
   for_own_bands(w, [&](int band) {
-    double gravity_work = 0, kinetic = 0, moving = 0, damped = 0, signal = 0, walled = 0;
+    double gravity_work = 0, kinetic = 0, moving = 0, damped = 0, walled = 0;
+    // The band's signal speed max_p (c_p + |v_p|) from the largest |v_p|^2 of
+    // each material: sqrt and + round correctly, so they keep order, and
+    // c + sqrt(max v^2) is the largest c + sqrt(v^2) bit for bit, at one
+    // square root per material instead of one per point.
+    double fastest[256];
+    std::fill(fastest, fastest + kinds, -1.0);
     for (int s = w.band_start[band]; s < w.band_start[band + 1]; ++s) {
       const int p = w.order[s];
       const Stencil& st = w.stencils[p];
-      Lane4 sax{}, say{}, svx{}, svy{}, swx{}, swy{};
+      Lane4 sax{}, say{}, svx{}, svy{};
       for (int b = 0; b < 3; ++b) {
         const int row = g.node(st.base_i, st.base_j + b);
         const Lane4 S = lanes3(st.wx) * st.wy[b];
         sax += S * load4(&g.ax[row]);
         say += S * load4(&g.ay[row]);
-        swx += S * load4(&g.held_ax[row]);
-        swy += S * load4(&g.held_ay[row]);
         svx += S * load4(&g.vx[row]);
         svy += S * load4(&g.vy[row]);
       }
-      const double vx = sum3(svx), vy = sum3(svy), wx = sum3(swx), wy = sum3(swy);
+      const double vx = sum3(svx), vy = sum3(svy);
       const double dx = in.dt * vx, dy = in.dt * vy;  // Eq. (29)
       px[p] += dx;
       py[p] += dy;
@@ -149,9 +247,24 @@ void grid_to_points(World& w, const StepInput& in) {
       kinetic += 0.5 * m * v2;
       moving += 0.5 * m * (vx * vx + vy * vy);
       damped += 0.5 * m * (ux * ux + uy * uy - v2);
-      signal = std::max(signal, w.materials[material[p]].wave_speed + std::sqrt(v2));
-      walled += 0.5 * m * in.dt * in.dt * (wx * wx + wy * wy);
+      fastest[material[p]] = std::max(fastest[material[p]], v2);
+      // The walls' share of the velocity change, sum_i S_ip held_a_i: zero,
+      // and not added, for a point whose stencil no wall acts on.
+      if (g.reaches_walls(st.base_i, st.base_j)) {
+        Lane4 swx{}, swy{};
+        for (int b = 0; b < 3; ++b) {
+          const int row = g.node(st.base_i, st.base_j + b);
+          const Lane4 S = lanes3(st.wx) * st.wy[b];
+          swx += S * load4(&g.held_ax[row]);
+          swy += S * load4(&g.held_ay[row]);
+        }
+        const double wx = sum3(swx), wy = sum3(swy);
+        walled += 0.5 * m * in.dt * in.dt * (wx * wx + wy * wy);
+      }
     }
+    double signal = 0;
+    for (int k = 0; k < kinds; ++k)
+      if (fastest[k] >= 0) signal = std::max(signal, w.materials[k].wave_speed + std::sqrt(fastest[k]));
     store_point_sums(w, band, {gravity_work, kinetic, moving, damped, signal, walled});
   });
 }

@@ -57,18 +57,20 @@ void points_to_grid(World& w) {
   const Particles& pts = w.points;
   Grid& g = w.grid;
   scatter_own_bands(w, [&](int band) {
+    NodeSums<3> sums{{g.mass.data(), g.px.data(), g.py.data()}, g.stride};
     for (int s = w.band_start[band]; s < w.band_start[band + 1]; ++s) {
       const int p = w.order[s];
       const Stencil& st = w.stencils[p];
       const double m = pts.mass[p], mvx = m * pts.vx[p], mvy = m * pts.vy[p];
+      sums.hold(g.node(st.base_i, st.base_j));
       for (int b = 0; b < 3; ++b) {
-        const int row = g.node(st.base_i, st.base_j + b);
-        const Lane4 S = lanes3(st.wx) * st.wy[b];                   // S_ip, Eq. (12)
-        store4(&g.mass[row], load4(&g.mass[row]) + S * m);  // Eq. (26)
-        store4(&g.px[row], load4(&g.px[row]) + S * mvx);    // Eq. (27)
-        store4(&g.py[row], load4(&g.py[row]) + S * mvy);
+        const Lane4 S = lanes3(st.wx) * st.wy[b];  // S_ip, Eq. (12)
+        sums.rows[0][b] += S * m;                  // Eq. (26)
+        sums.rows[1][b] += S * mvx;                // Eq. (27)
+        sums.rows[2][b] += S * mvy;
       }
     }
+    sums.flush();
     if (!g.friction_walls.empty()) scatter_wall_gaps(w, band);
   });
 }

@@ -1,0 +1,184 @@
+// The Mohr-Coulomb return of mohr_coulomb.hpp written once for one point
+// (T = double) and for eight (T = Lane8, gimp.hpp), with selects (?:) in
+// place of branches: every region's result is computed and the trial's own
+// region is kept. Each lane is bit for bit what the one-point form gives;
+// the step runs the eight-point form (sim/physics/point_update.cpp), the tests
+// and the painted fields the one-point form (mohr_coulomb.cpp).
+//
+// C is the surface's constants, MohrCoulomb itself or MohrCoulombLanes below:
+// the same names, doubles or Lane8s.
+#pragma once
+
+#include <array>
+#include <cmath>
+
+#include "sim/physics/gimp.hpp"
+#include "sim/physics/mohr_coulomb.hpp"
+
+namespace sim {
+
+template <class T>
+using Principal3Of = std::array<T, 3>;
+
+// The constants of eight points' surfaces, one lane each.
+struct MohrCoulombLanes {
+  Lane8 k, sigma_c, apex;
+  Principal3Of<Lane8> plane_corrector, edge1, edge2, side1, side2, project1, project2;
+};
+
+// Lane l holds the constants of *surfaces[l].
+inline MohrCoulombLanes lanes_of(const MohrCoulomb* const surfaces[8]) {
+  MohrCoulombLanes c;
+  const auto each = [&](double MohrCoulomb::*field) {
+    Lane8 v;
+    for (int l = 0; l < 8; ++l) v[l] = surfaces[l]->*field;
+    return v;
+  };
+  const auto each3 = [&](Principal3 MohrCoulomb::*field) {
+    Principal3Of<Lane8> v;
+    for (int i = 0; i < 3; ++i)
+      for (int l = 0; l < 8; ++l) v[i][l] = (surfaces[l]->*field)[i];
+    return v;
+  };
+  c.k = each(&MohrCoulomb::k);
+  c.sigma_c = each(&MohrCoulomb::sigma_c);
+  c.apex = each(&MohrCoulomb::apex);
+  c.plane_corrector = each3(&MohrCoulomb::plane_corrector);
+  c.edge1 = each3(&MohrCoulomb::edge1);
+  c.edge2 = each3(&MohrCoulomb::edge2);
+  c.side1 = each3(&MohrCoulomb::side1);
+  c.side2 = each3(&MohrCoulomb::side2);
+  c.project1 = each3(&MohrCoulomb::project1);
+  c.project2 = each3(&MohrCoulomb::project2);
+  return c;
+}
+
+namespace mc_return {
+
+inline double square_root(double x) { return std::sqrt(x); }
+inline Lane8 square_root(const Lane8& x) {
+  Lane8 r;
+  for (int l = 0; l < 8; ++l) r[l] = std::sqrt(x[l]);  // one vsqrtpd: sqrt is exact in IEEE
+  return r;
+}
+
+template <class T>
+T dot(const Principal3Of<T>& a, const Principal3Of<T>& b) {
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+// Mohr's circle of the in-plane stress: half the difference of the normal
+// stresses and the radius.
+template <class T>
+T half_difference(const StressOf<T>& s) {
+  return 0.5 * (s.xx - s.yy);
+}
+template <class T>
+T circle_radius(const StressOf<T>& s) {
+  const T half = half_difference(s);
+  return square_root(half * half + s.xy * s.xy);
+}
+
+// The principal values sorted, s1 >= s2 >= s3, and where sigma_zz went:
+// plane strain makes it a principal stress that may sort anywhere.
+template <class T>
+struct Sorted {
+  Principal3Of<T> s;
+  decltype(T{} < T{}) zz_first, zz_at_least_second;  // zz in slot 0; in slot 0 or 1
+};
+
+template <class T>
+Sorted<T> principal_values(const StressOf<T>& s, const T& radius) {
+  const T centre = 0.5 * (s.xx + s.yy);
+  const T hi = centre + radius, lo = centre - radius, zz = s.zz;
+  const auto first = zz >= hi, second = zz >= lo;
+  return {{first ? zz : hi, first ? hi : (second ? zz : lo), first ? lo : (second ? lo : zz)},
+          first,
+          second};
+}
+
+// The in-plane direction of the larger in-plane value as (cos 2 theta,
+// sin 2 theta), theta from x; (1, 0) when the in-plane values are equal.
+template <class T>
+void principal_directions(const StressOf<T>& s, const T& radius, T& cos2, T& sin2) {
+  const T inverse = 1 / radius;  // infinite at radius 0, and then not kept
+  const auto circle = radius > 0;
+  cos2 = circle ? half_difference(s) * inverse : T{} + 1.0;
+  sin2 = circle ? s.xy * inverse : T{};
+}
+
+// New values for the slots of `sorted` put back on its principal directions.
+// The first non-zz slot holds the value on the (cos theta, sin theta)
+// direction, the second the one on the perpendicular direction. Writing
+// v_a n n^T + v_b t t^T in double-angle form holds whichever of the two is
+// larger, so the slots need no reordering.
+template <class T>
+StressOf<T> from_principal(const Sorted<T>& sorted, const T& cos2, const T& sin2,
+                           const Principal3Of<T>& v) {
+  const T va = sorted.zz_first ? v[1] : v[0];
+  const T vb = sorted.zz_first || sorted.zz_at_least_second ? v[2] : v[1];
+  const T zz = sorted.zz_first ? v[0] : (sorted.zz_at_least_second ? v[1] : v[2]);
+  const T centre = 0.5 * (va + vb), half = 0.5 * (va - vb);
+  return {centre + half * cos2, centre - half * cos2, half * sin2, zz};
+}
+
+// f = k s1 - s3 - sigma_c (mohr_coulomb.hpp): negative inside.
+template <class T, class C>
+T yield_function(const C& mc, const Principal3Of<T>& s) {
+  return mc.k * s[0] - s[2] - mc.sigma_c;
+}
+
+template <class T>
+struct Regions {
+  decltype(T{} < T{}) apex, plane, edge_s1_s2;  // otherwise the s2 = s3 edge
+};
+
+// Clausen et al. (2007) regions for a sorted trial with f = f(s) > 0, tested
+// in the method notes' order; `s` becomes s_C.
+//
+// t_i is where the edge-i return would land; t_i >= 0 for both edges means
+// either would land at or past the apex: the trial lies in the cone of
+// return directions from the apex. With psi = 0 the gradients are
+// deviatoric, the return keeps the mean stress, and no point of the surface
+// has a mean above the apex: then t1 and t2 are positive multiples of
+// (mean - apex) and this test sends exactly those trials to the apex (a
+// tension cut-off; the only case without a plastic-flow solution).
+// Between the two boundary planes p_I, p_II the plane return stays sorted
+// (s1 >= s2 >= s3), on the facet between the edges. s_a + t l puts the
+// returned values exactly on an edge (s1 == s2 or s2 == s3 bit for bit) and
+// on the surface up to round-off in t.
+template <class T, class C>
+Regions<T> plastic_return(const C& mc, Principal3Of<T>& s, const T& f) {
+  const Principal3Of<T> d{s[0] - mc.apex, s[1] - mc.apex, s[2] - mc.apex};  // s_B - s_a
+  const T t1 = dot(mc.project1, d), t2 = dot(mc.project2, d);
+  const T p1 = dot(mc.side1, d), p2 = dot(mc.side2, d);
+  const Regions<T> r{t1 >= 0 && t2 >= 0, p1 >= 0 && p2 <= 0, p1 < 0};
+  for (int i = 0; i < 3; ++i) {
+    const T plane = s[i] - f * mc.plane_corrector[i];
+    const T edge1 = mc.apex + t1 * mc.edge1[i], edge2 = mc.apex + t2 * mc.edge2[i];
+    s[i] = r.apex ? T{} + mc.apex : (r.plane ? plane : (r.edge_s1_s2 ? edge1 : edge2));
+  }
+  return r;
+}
+
+// The return of a trial stress in place; the mask of the trials that were
+// inside the surface, left untouched bit for bit. Isotropic elasticity and
+// isotropic f, g: the return changes principal values only, so they go back
+// on the trial's principal directions.
+template <class T, class C>
+auto return_in_place(const C& mc, StressOf<T>& s, Regions<T>& regions) {
+  const T radius = circle_radius(s);
+  Sorted<T> sorted = principal_values(s, radius);
+  const T f = yield_function<T>(mc, sorted.s);
+  const auto elastic = f <= 0;
+  T cos2, sin2;
+  principal_directions(s, radius, cos2, sin2);
+  regions = plastic_return(mc, sorted.s, f);
+  const StressOf<T> back = from_principal(sorted, cos2, sin2, sorted.s);
+  s = {elastic ? s.xx : back.xx, elastic ? s.yy : back.yy, elastic ? s.xy : back.xy,
+       elastic ? s.zz : back.zz};
+  return elastic;
+}
+
+}  // namespace mc_return
+}  // namespace sim

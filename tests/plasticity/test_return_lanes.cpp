@@ -1,0 +1,92 @@
+// The eight-point Mohr-Coulomb return the step runs (mohr_coulomb_return.hpp,
+// T = Lane8) against the one-point return, bit for bit: the trials of
+// test_return.cpp, eight at a time, each lane on another case's surface, so
+// one vector holds several regions and surfaces at once. Also trials with
+// equal in-plane stresses, where the principal direction is undefined.
+#include <gtest/gtest.h>
+
+#include <cstring>
+
+#include "sim/physics/mohr_coulomb_return.hpp"
+#include "trials.hpp"
+
+namespace {
+
+using namespace plasticity_test;
+using sim::Lane8;
+using sim::ReturnRegion;
+
+struct Lanes {
+  const sim::MohrCoulomb* surface[8];
+  sim::Stress trial[8];
+};
+
+// Returns the eight trials with the one-point and the eight-point form and
+// compares every stress component's bits and the elastic lanes.
+int compare(const Lanes& in) {
+  sim::StressOf<Lane8> s;
+  for (int l = 0; l < 8; ++l) {
+    s.xx[l] = in.trial[l].xx;
+    s.yy[l] = in.trial[l].yy;
+    s.xy[l] = in.trial[l].xy;
+    s.zz[l] = in.trial[l].zz;
+  }
+  sim::mc_return::Regions<Lane8> regions;
+  const auto elastic = sim::mc_return::return_in_place(sim::lanes_of(in.surface), s, regions);
+  int plastic = 0;
+  for (int l = 0; l < 8; ++l) {
+    sim::Stress one = in.trial[l];
+    const ReturnRegion region = sim::mohr_coulomb_return(*in.surface[l], one);
+    const sim::Stress lane{s.xx[l], s.yy[l], s.xy[l], s.zz[l]};
+    EXPECT_EQ(std::memcmp(&one, &lane, sizeof one), 0)
+        << "lane " << l << " region " << int(region) << ": (" << one.xx << ", " << one.yy << ", "
+        << one.xy << ", " << one.zz << ") one at a time, (" << lane.xx << ", " << lane.yy << ", "
+        << lane.xy << ", " << lane.zz << ") eight at a time";
+    EXPECT_EQ(elastic[l] != 0, region == ReturnRegion::Elastic) << "lane " << l;
+    plastic += region != ReturnRegion::Elastic;
+  }
+  return plastic;
+}
+
+TEST(MohrCoulombReturnLanes, EightAtATimeGiveTheBitsOfOneAtATime) {
+  const std::vector<Case> cases = all_cases();
+  std::vector<Model> models;
+  for (const Case& c : cases) models.push_back(model_of(c));
+  std::vector<std::vector<Trial>> trials;
+  for (std::size_t ci = 0; ci < cases.size(); ++ci)
+    trials.push_back(make_trials(models[ci], seed_of(static_cast<int>(ci))));
+  long plastic = 0, total = 0;
+  for (std::size_t ci = 0; ci < cases.size(); ++ci) {
+    for (std::size_t n = 0; n + 8 <= trials[ci].size(); n += 8) {
+      Lanes in;
+      for (int l = 0; l < 8; ++l) {
+        const std::size_t c = (ci + static_cast<std::size_t>(l) * 5) % cases.size();
+        const Trial& t = trials[c][n + l];
+        in.surface[l] = &models[c].mc;
+        in.trial[l] = stress_of(t.s_b, t.zz_slot, t.theta);
+      }
+      plastic += compare(in);
+      total += 8;
+      if (HasFailure()) return;
+    }
+  }
+  // The trials reach every region (test_return.cpp counts them); most yield.
+  EXPECT_GT(plastic, total / 2);
+}
+
+TEST(MohrCoulombReturnLanes, EqualInPlaneStressesKeepTheirBits) {
+  const Model cohesive = model_of(all_cases()[0]);
+  Lanes in;
+  for (int l = 0; l < 8; ++l) in.surface[l] = &cohesive.mc;
+  const double a = cohesive.apex, R = 200e3;
+  // Hydrostatic below and beyond the apex, equal in-plane values with
+  // sigma_zz above, between and below, and a pure in-plane shear.
+  const sim::Stress cases[8] = {{a - R, a - R, 0, a - R}, {a + R, a + R, 0, a + R},
+                                {-R, -R, 0, R},           {-R, -R, 0, -3 * R},
+                                {-3 * R, -3 * R, 0, -R},  {0, 0, R, 0},
+                                {a + R, a + R, 0, a - R}, {-R, -R, 0, -R}};
+  std::copy(cases, cases + 8, in.trial);
+  EXPECT_GT(compare(in), 0);
+}
+
+}  // namespace
