@@ -37,6 +37,7 @@ namespace {
 
 constexpr int kRefinements[] = {1, 2, 4, 8, 16};
 constexpr double kMinPointSteps = 2e7;
+constexpr long kCoarsestPoints = 25'538;  // the granular column at refine 1
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -136,6 +137,9 @@ int size_sweep(int argc, char** argv) {
               "1 thr Mpt/s", "2 thr Mpt/s", "speedup", "World B/pt", "grid B/pt", "RSS B/pt",
               "bound Mpt/s", "of bound");
   for (const int refine : kRefinements) {
+    // A row has a little more than refine^2 times the coarsest row's points:
+    // a row sure to be over the limit is not built.
+    if (static_cast<double>(kCoarsestPoints) * refine * refine > up_to) break;
     Row row = make_row(refine);
     const double points = static_cast<double>(row.world.points.size());
     if (points > up_to) break;

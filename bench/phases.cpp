@@ -1,0 +1,87 @@
+// The step's phases timed one by one: the granular column of the size sweep
+// (bench/granular_column.hpp) at a given refinement, stepped on one thread by
+// calling the phases of sim::step in its order (outside a parallel region one
+// thread owns every band). Prints ns per point for each phase and a hash of
+// the points and the step's sums, so that two builds can be compared for
+// speed and for bits. Run two builds in turns and compare the minima: this
+// machine's speed drifts by up to 40 % from minute to minute.
+//   build/bench/phases [REFINE] [STEPS]
+#include <chrono>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+
+#include "bench/granular_column.hpp"
+#include "sim/physics/step.hpp"
+#include "sim/scene/seed.hpp"
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// FNV-1a over the bytes of the points' state and the step's sums.
+struct Hash {
+  std::uint64_t h = 1469598103934665603ull;
+  void add(const void* data, std::size_t bytes) {
+    const auto* c = static_cast<const unsigned char*>(data);
+    for (std::size_t i = 0; i < bytes; ++i) h = (h ^ c[i]) * 1099511628211ull;
+  }
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const int refine = argc > 1 ? std::atoi(argv[1]) : 1, steps = argc > 2 ? std::atoi(argv[2]) : 200;
+  if (refine < 1 || steps < 1) {
+    std::fprintf(stderr, "usage: phases [REFINE >= 1] [STEPS >= 1]\n");
+    return 2;
+  }
+  const sim::Scenario s = bench::granular_column(refine);
+  sim::World w = sim::make_world(s);
+  double signal = 0;
+  for (const auto& m : w.materials) signal = std::max(signal, m.wave_speed);
+  sim::StepInput in;
+  in.dt = s.time_step.courant * s.cell_size / signal;
+  in.gravity = s.gravity;
+  sim::StepReport report;
+  for (int k = 0; k < 30; ++k) sim::step(w, in, report);  // past the first, elastic steps
+
+  const char* names[7] = {"locate", "reset", "p2g", "walls", "stress+force", "nodal", "g2p"};
+  double seconds[7] = {};
+  for (int k = 0; k < steps; ++k) {
+    Clock::time_point t[8];
+    t[0] = Clock::now();
+    sim::locate_points(w);
+    t[1] = Clock::now();
+    sim::reset_grid(w);
+    t[2] = Clock::now();
+    sim::points_to_grid(w);
+    t[3] = Clock::now();
+    sim::enforce_walls_on_momentum(w);
+    t[4] = Clock::now();
+    sim::update_stress_and_forces(w, in);
+    t[5] = Clock::now();
+    sim::update_nodal_momentum(w, in.dt);
+    t[6] = Clock::now();
+    sim::grid_to_points(w, in);
+    t[7] = Clock::now();
+    for (int i = 0; i < 7; ++i) seconds[i] += std::chrono::duration<double>(t[i + 1] - t[i]).count();
+  }
+  const double point_steps = static_cast<double>(w.points.size()) * steps;
+  double total = 0;
+  for (int i = 0; i < 7; ++i) {
+    std::printf("%-13s %6.1f ns/pt\n", names[i], seconds[i] / point_steps * 1e9);
+    total += seconds[i];
+  }
+  std::printf("%-13s %6.1f ns/pt (%zu points, %d steps)\n", "total", total / point_steps * 1e9,
+              w.points.size(), steps);
+  Hash hash;
+  const sim::Particles& p = w.points;
+  for (const auto* v : {&p.x, &p.y, &p.vx, &p.vy, &p.density, &p.sxx, &p.syy, &p.sxy, &p.szz})
+    hash.add(v->data(), v->size() * sizeof(double));
+  hash.add(p.yielded.data(), p.yielded.size());
+  const sim::StepReport sums = sim::sum_step_report(w);
+  hash.add(&sums, sizeof sums);
+  std::printf("hash %016llx\n", static_cast<unsigned long long>(hash.h));
+  return 0;
+}
