@@ -2,6 +2,7 @@
 
 #include <omp.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <fstream>
@@ -10,6 +11,7 @@
 
 #include "output/amount_text.hpp"
 #include "output/frames.hpp"
+#include "sim/scene/random_field.hpp"
 #include "sim/scene/seed.hpp"
 #include "sim/physics/step.hpp"
 
@@ -134,6 +136,13 @@ Estimate estimate_run(const sim::Simulation& sim, int width, int height, const f
   e.disk_bytes = e.frames * (spilled + e.fields * pixels * kFrameBytesPerPixel) +
                  e.states * e.points * kVtkBytesPerPoint;
   e.memory_bytes = kBaseMemoryBytes + kBytesPerPoint * e.points + kBytesPerNode * e.nodes;
+  // A random field's draw is freed before the points' own strengths are
+  // made (sim::set_point_strength), so the larger of the two counts: for a
+  // 601,148-point slope 376 MB of draw, against 365 MB more peak RSS
+  // measured than the same run without a field (bench/README.md).
+  if (sim::sets_random_field(s))
+    e.memory_bytes += std::max(sim::field_draw_peak_bytes(sim::field_lattice(s)),
+                               sim::kBytesPerPointWithField * e.points);
   e.point_steps_per_second = calibrate_step_rate();
   e.wall_seconds = e.point_steps / e.point_steps_per_second +
                    e.frames * e.fields * pixels * kPaintSecondsPerPixel;

@@ -3,15 +3,28 @@
 // the same figures (app/estimate.hpp, README.md "What a run will cost").
 #pragma once
 
+#include "sim/physics/mohr_coulomb.hpp"
+
 namespace sim {
 
 // Peak resident memory (VmHWM) of `landslide run`.
 constexpr double kBaseMemoryBytes = 64e6;  // the process with nothing to simulate
 // Per point: 389 B measured for a 10,000,000-point granular column on
 // 2 threads (3.86 GB peak, /usr/bin/time -v; bench/README.md), the
-// watchdog's saved state included. Points with a random field hold their
-// own Mohr-Coulomb surface on top (sim/physics/point_strength.hpp).
+// watchdog's saved state included.
 constexpr double kBytesPerPoint = 400;
+// Per point once a stage sets a random field: its own cohesion, friction
+// angle and Mohr-Coulomb surface (sim/physics/point_strength.hpp) and the
+// field's value at the point. Drawing the field takes up to
+// field_draw_peak_bytes of its lattice (sim/scene/random_field.hpp), freed
+// before the points' strengths are made: a run needs the larger of the two.
+// With kMaxLatticeNodes each way, the draw holds both factors and three
+// lattice arrays.
+constexpr double kBytesPerPointWithField = 3 * sizeof(double) + sizeof(MohrCoulomb);
+// The lattice's correlation matrices are nx by nx and ny by ny doubles.
+constexpr double kMaxLatticeNodes = 4000;
+constexpr double kMaxFieldDrawBytes =
+    sizeof(double) * (2 * kMaxLatticeNodes * kMaxLatticeNodes + 3 * kMaxLatticeNodes * kMaxLatticeNodes);
 // Per grid node a step has written: the 11 nodal arrays and 2 flags, 90 B
 // (sim/physics/grid.hpp); nodes no point has reached take almost nothing
 // (sim/physics/node_array.hpp), so this bounds the grid from above.
@@ -31,5 +44,15 @@ static_assert(kBaseMemoryBytes + kBytesPerPoint * kMaxPoints + kBytesPerNode * k
 static_assert(kBaseMemoryBytes + kBytesPerPoint * (kMaxPoints + 1e6) +
                       kBytesPerNode * kMaxGridNodes > kMemoryOfLargestMachine,
               "kMaxPoints: the largest whole million that fits");
+// A scene with a random field has at most one point per lattice node
+// (each starts on a node of its own), kMaxLatticeNodes^2 = 16 M; their own
+// strengths outweigh the largest draw, and it all fits the machine too.
+constexpr double kMaxPointsWithField = kMaxLatticeNodes * kMaxLatticeNodes;
+static_assert(kBytesPerPointWithField * kMaxPointsWithField >= kMaxFieldDrawBytes,
+              "a field's largest scene: its points' strengths outweigh its draw");
+static_assert(kBaseMemoryBytes + (kBytesPerPoint + kBytesPerPointWithField) * kMaxPointsWithField +
+                      kBytesPerNode * kMaxGridNodes <=
+                  kMemoryOfLargestMachine,
+              "the largest scene with a field must fit the machine");
 
 }  // namespace sim

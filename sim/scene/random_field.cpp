@@ -187,6 +187,12 @@ FieldLattice field_lattice(const Scenario& s) {
   return l;
 }
 
+double field_draw_peak_bytes(const FieldLattice& lattice) {
+  const double big = std::max(lattice.nx, lattice.ny), small = std::min(lattice.nx, lattice.ny);
+  const double factors = big * big + small * small, nodes = double(lattice.nx) * lattice.ny;
+  return sizeof(double) * std::max(3 * big * big + small * small, factors + 3 * nodes);
+}
+
 std::vector<double> field_at_points(const RandomFieldSpec& field, const Scenario& s,
                                     const Particles& points, int material) {
   const FieldLattice lattice = field_lattice(s);

@@ -107,6 +107,16 @@ double sample_nearest(const FieldLattice& lattice, const std::vector<double>& va
 // the whole domain, so each point starts on a node of its own.
 FieldLattice field_lattice(const Scenario& s);
 
+// The most memory drawing one field on `lattice` holds at once, bytes: the
+// Cholesky of the larger axis (its correlation matrix, the factorisation's
+// copy and the factor returned, with the other axis' factor: 3 n^2 + m^2
+// doubles), or, drawing, both factors and three lattice-sized arrays (the
+// normals, Eigen's product temporary and the field). Read off
+// random_field.cpp; for a 601,148-point slope (the 66,787-point paper slope
+// at cell 0.059 m) it gives 376 MB, where the run took 365 MB more peak RSS
+// than the same run without a field (issue 17, bench/README.md).
+double field_draw_peak_bytes(const FieldLattice& lattice);
+
 // The field's value for each point of `material`, at the lattice node
 // nearest its initial position (x0, y0): the field moves with the soil.
 // Entries of other points are 0. Throws std::invalid_argument (parameters the

@@ -134,4 +134,13 @@ std::string read_scenario_text(const std::string& path);
 // in messages).
 Scenario parse_scenario(const std::string& text, const std::string& label);
 
+// Whether a stage draws a random field: each point then holds its own
+// strength, and the draw its lattice (sim/scene/memory_budget.hpp).
+inline bool sets_random_field(const Scenario& s) {
+  for (const StageSpec& stage : s.stages)
+    for (const MaterialChange& change : stage.changes)
+      if (change.has_field) return true;
+  return false;
+}
+
 }  // namespace sim

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "sim/scene/memory_budget.hpp"
 #include "sim/scene/scenario_parts.hpp"
 
 namespace sim {
@@ -19,8 +20,6 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 // Seeds are whole numbers a double holds exactly, so any JSON tool keeps them.
 constexpr double kMaxSeed = 9007199254740991.0;  // 2^53 - 1
-// The lattice's correlation matrices are nx by nx and ny by ny doubles.
-constexpr double kMaxLatticeNodes = 4000;
 // Their condition number is about theta / spacing; past this Cholesky fails.
 constexpr double kMaxThetaOverSpacing = 1e6;
 

@@ -10,12 +10,16 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <sstream>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
 #include "render/video.hpp"
+#include "sim/scene/memory_budget.hpp"
+#include "sim/scene/random_field.hpp"
+#include "sim/scene/scenario.hpp"
 #include "tests/app/tiny_block.hpp"
 
 namespace {
@@ -250,3 +254,47 @@ TEST_F(Preflight, EarlierOutputsAreRefusedUnlessOverwrite) {
 }
 
 }  // namespace
+
+namespace {
+
+// The figure of check's "memory: about N unit" line, in bytes.
+double memory_estimate(const std::string& out) {
+  const std::string key = "memory: about ";
+  const std::size_t at = out.find(key);
+  if (at == std::string::npos) return -1;
+  std::istringstream line(out.substr(at + key.size()));
+  double value = 0;
+  std::string unit;
+  line >> value >> unit;
+  const std::vector<std::string> units = {"B", "kB", "MB", "GB", "TB"};
+  for (std::size_t u = 0; u < units.size(); ++u, value *= 1000)
+    if (unit == units[u]) return value;
+  return -1;
+}
+
+}  // namespace
+
+// A stage's random field costs memory: its draw, or the points' own
+// strengths after it, whichever is larger (sim/scene/memory_budget.hpp). The
+// estimate adds that to the same scene's without the field.
+TEST_F(Preflight, ARandomFieldCountsInTheMemoryEstimate) {
+  json scene = json::parse(
+      read_text(fs::path(LANDSLIDE_SOURCE_DIR) / "scenarios/paper-slope-phi20-n66787.json"));
+  const fs::path plain = write_scene("plain", scene);
+  scene["stages"][1]["set"]["friction_angle"] = {
+      {"random_field",
+       {{"distribution", "truncated-normal"}, {"mean", 20}, {"cov", 0.15}, {"lower", 12},
+        {"upper", 28}, {"scale_of_fluctuation", {20, 2}}, {"seed", 7}}}};
+  const fs::path field = write_scene("field", scene);
+  const Result without = landslide({"check", plain.string(), "--threads", "1"});
+  const Result with = landslide({"check", field.string(), "--threads", "1"});
+  ASSERT_EQ(without.status, 0) << without.err;
+  ASSERT_EQ(with.status, 0) << with.err;
+  const sim::Scenario s = sim::load_scenario(field.string());
+  const double draw = sim::field_draw_peak_bytes(sim::field_lattice(s));
+  const double strengths = sim::kBytesPerPointWithField * 66787;
+  ASSERT_GT(draw, strengths) << "this scene's draw is the larger part";
+  // Both figures are printed to three digits.
+  EXPECT_NEAR(memory_estimate(with.out) - memory_estimate(without.out), draw, 1.5e6)
+      << without.out << with.out;
+}
