@@ -5,13 +5,20 @@
 // the points and the step's sums, so that two builds can be compared for
 // speed and for bits. Run two builds in turns and compare the minima: this
 // machine's speed drifts by up to 40 % from minute to minute.
-//   build/bench/phases [REFINE] [STEPS]
+// --own-strength gives every point its own friction angle (28 to 32 degrees
+// in a fixed pattern), as a random field does: each point then has its own
+// Mohr-Coulomb surface (sim/physics/point_strength.hpp).
+//   build/bench/phases [REFINE] [STEPS] [--own-strength]
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
+#include <cmath>
 #include <cstdlib>
+#include <string>
+#include <vector>
 
 #include "bench/granular_column.hpp"
+#include "sim/physics/point_strength.hpp"
 #include "sim/physics/step.hpp"
 #include "sim/scene/seed.hpp"
 
@@ -31,13 +38,20 @@ struct Hash {
 }  // namespace
 
 int main(int argc, char** argv) {
+  const bool own = argc > 1 && std::string(argv[argc - 1]) == "--own-strength";
+  if (own) --argc;
   const int refine = argc > 1 ? std::atoi(argv[1]) : 1, steps = argc > 2 ? std::atoi(argv[2]) : 200;
-  if (refine < 1 || steps < 1) {
-    std::fprintf(stderr, "usage: phases [REFINE >= 1] [STEPS >= 1]\n");
+  if (refine < 1 || steps < 1 || argc > 3) {
+    std::fprintf(stderr, "usage: phases [REFINE >= 1] [STEPS >= 1] [--own-strength]\n");
     return 2;
   }
   const sim::Scenario s = bench::granular_column(refine);
   sim::World w = sim::make_world(s);
+  if (own) {
+    std::vector<double> angles(w.points.size());
+    for (std::size_t p = 0; p < angles.size(); ++p) angles[p] = (28.0 + (p * 7 % 41) * 0.1) * M_PI / 180;
+    sim::set_point_strength(w, 0, "friction_angle", angles);
+  }
   double signal = 0;
   for (const auto& m : w.materials) signal = std::max(signal, m.wave_speed);
   sim::StepInput in;

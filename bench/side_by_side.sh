@@ -8,6 +8,9 @@
 #   bench/side_by_side.sh BEFORE AFTER [ROUNDS] [SIZE-SWEEP OPTIONS...]
 # BEFORE and AFTER are throughput binaries; the options go to --sizes, e.g.
 #   bench/side_by_side.sh old/build/bench/throughput build/bench/throughput 5 20 --up-to 2000000
+# BEFORE_OPTIONS and AFTER_OPTIONS, if set, go to one binary only (a binary
+# before the team rule knows no --exact-threads):
+#   AFTER_OPTIONS=--exact-threads bench/side_by_side.sh OLD NEW 5 20
 set -euo pipefail
 [ $# -ge 2 ] || { echo "usage: $0 BEFORE AFTER [ROUNDS] [SIZE-SWEEP OPTIONS...]" >&2; exit 2; }
 before=$1 after=$2
@@ -18,13 +21,15 @@ for b in "$before" "$after"; do
 done
 rows=$(mktemp /tmp/side-by-side.XXXXXX)
 trap 'rm -f "$rows"' EXIT
-echo "machine: $(nproc) cores, load $(cut -d' ' -f1-3 /proc/loadavg); $rounds rounds of --sizes $*"
+echo "machine: $(nproc) cores, load $(cut -d' ' -f1-3 /proc/loadavg); $rounds rounds of --sizes $*" \
+  "(before: ${BEFORE_OPTIONS:-no more options}; after: ${AFTER_OPTIONS:-no more options})"
 for ((r = 1; r <= rounds; ++r)); do
   for which in before after; do
-    bin=$before
-    [ "$which" = after ] && bin=$after
+    bin=$before options=${BEFORE_OPTIONS:-}
+    [ "$which" = after ] && bin=$after options=${AFTER_OPTIONS:-}
     # A row of the sweep: refine, points, steps, 1-thread and 2-thread Mpt/s, ...
-    "$bin" --sizes "$@" | awk -v w="$which" '$1 ~ /^[0-9]+$/ && NF >= 6 {print w, $2, $4, $5}' >> "$rows"
+    # shellcheck disable=SC2086 # options are words
+    "$bin" --sizes "$@" $options | awk -v w="$which" '$1 ~ /^[0-9]+$/ && NF >= 6 {print w, $2, $4, $5}' >> "$rows"
   done
   echo "round $r of $rounds done ($(date -u +%H:%M:%S) UTC)"
 done
