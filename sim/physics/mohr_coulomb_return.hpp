@@ -26,28 +26,33 @@ struct MohrCoulombLanes {
   Principal3Of<Lane8> plane_corrector, side1, side2, project1, project2;
 };
 
+// Lane l holds `field` of *from[l]: the one-point constants of eight points
+// (surfaces, materials) gathered into lanes.
+template <class S>
+Lane8 lanes_of(const S* const from[8], double S::*field) {
+  Lane8 v;
+  for (int l = 0; l < 8; ++l) v[l] = from[l]->*field;
+  return v;
+}
+template <class S>
+Principal3Of<Lane8> lanes_of(const S* const from[8], Principal3 S::*field) {
+  Principal3Of<Lane8> v;
+  for (int i = 0; i < 3; ++i)
+    for (int l = 0; l < 8; ++l) v[i][l] = (from[l]->*field)[i];
+  return v;
+}
+
 // Lane l holds the constants of *surfaces[l].
-inline MohrCoulombLanes lanes_of(const MohrCoulomb* const surfaces[8]) {
+inline MohrCoulombLanes surface_lanes(const MohrCoulomb* const surfaces[8]) {
   MohrCoulombLanes c;
-  const auto each = [&](double MohrCoulomb::*field) {
-    Lane8 v;
-    for (int l = 0; l < 8; ++l) v[l] = surfaces[l]->*field;
-    return v;
-  };
-  const auto each3 = [&](Principal3 MohrCoulomb::*field) {
-    Principal3Of<Lane8> v;
-    for (int i = 0; i < 3; ++i)
-      for (int l = 0; l < 8; ++l) v[i][l] = (surfaces[l]->*field)[i];
-    return v;
-  };
-  c.k = each(&MohrCoulomb::k);
-  c.sigma_c = each(&MohrCoulomb::sigma_c);
-  c.apex = each(&MohrCoulomb::apex);
-  c.plane_corrector = each3(&MohrCoulomb::plane_corrector);
-  c.side1 = each3(&MohrCoulomb::side1);
-  c.side2 = each3(&MohrCoulomb::side2);
-  c.project1 = each3(&MohrCoulomb::project1);
-  c.project2 = each3(&MohrCoulomb::project2);
+  c.k = lanes_of(surfaces, &MohrCoulomb::k);
+  c.sigma_c = lanes_of(surfaces, &MohrCoulomb::sigma_c);
+  c.apex = lanes_of(surfaces, &MohrCoulomb::apex);
+  c.plane_corrector = lanes_of(surfaces, &MohrCoulomb::plane_corrector);
+  c.side1 = lanes_of(surfaces, &MohrCoulomb::side1);
+  c.side2 = lanes_of(surfaces, &MohrCoulomb::side2);
+  c.project1 = lanes_of(surfaces, &MohrCoulomb::project1);
+  c.project2 = lanes_of(surfaces, &MohrCoulomb::project2);
   return c;
 }
 

@@ -22,12 +22,6 @@ struct MaterialLanes {
   MohrCoulombLanes mohr_coulomb;
 };
 
-Lane8 lanes_of(const MaterialConstants* const m[8], double MaterialConstants::*field) {
-  Lane8 v;
-  for (int l = 0; l < 8; ++l) v[l] = m[l]->*field;
-  return v;
-}
-
 // Remade only when a group of eight points has other materials or surfaces
 // than the group before: a scene of one soil and no random field makes it once.
 struct MaterialLanesCache {
@@ -43,7 +37,7 @@ struct MaterialLanesCache {
     lanes.shear = lanes_of(m, &MaterialConstants::shear);
     lanes.critical_density = lanes_of(m, &MaterialConstants::critical_density);
     for (int l = 0; l < 8; ++l) lanes.plastic[l] = m[l]->plastic ? -1 : 0;
-    lanes.mohr_coulomb = lanes_of(s);
+    lanes.mohr_coulomb = surface_lanes(s);
     return lanes;
   }
 };

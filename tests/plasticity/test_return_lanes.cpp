@@ -32,7 +32,7 @@ int compare(const Lanes& in) {
     s.zz[l] = in.trial[l].zz;
   }
   sim::mc_return::Regions<Lane8> regions;
-  const auto elastic = sim::mc_return::return_in_place(sim::lanes_of(in.surface), s, regions);
+  const auto elastic = sim::mc_return::return_in_place(sim::surface_lanes(in.surface), s, regions);
   int plastic = 0;
   for (int l = 0; l < 8; ++l) {
     sim::Stress one = in.trial[l];
