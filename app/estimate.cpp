@@ -138,8 +138,8 @@ Estimate estimate_run(const sim::Simulation& sim, int width, int height, const f
   e.memory_bytes = kBaseMemoryBytes + kBytesPerPoint * e.points + kBytesPerNode * e.nodes;
   // A random field's draw is freed before the points' own strengths are
   // made (sim::set_point_strength), so the larger of the two counts: for a
-  // 601,148-point slope 376 MB of draw, against 365 MB more peak RSS
-  // measured than the same run without a field (bench/README.md).
+  // 601,148-point slope 375 MB of draw, against 365 MB more peak RSS
+  // measured than the same run without a field (README.md).
   if (sim::sets_random_field(s))
     e.memory_bytes += std::max(sim::field_draw_peak_bytes(sim::field_lattice(s)),
                                sim::kBytesPerPointWithField * e.points);

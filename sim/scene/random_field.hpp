@@ -113,8 +113,9 @@ FieldLattice field_lattice(const Scenario& s);
 // doubles), or, drawing, both factors and three lattice-sized arrays (the
 // normals, Eigen's product temporary and the field). Read off
 // random_field.cpp; for a 601,148-point slope (the 66,787-point paper slope
-// at cell 0.059 m) it gives 376 MB, where the run took 365 MB more peak RSS
-// than the same run without a field (issue 17, bench/README.md).
+// at cell 0.059 m, a 3933 x 678 lattice) it gives 375 MB, where the run took
+// 365 MB more peak RSS than the same run without a field (issue 17,
+// README.md "What a run will cost").
 double field_draw_peak_bytes(const FieldLattice& lattice);
 
 // The field's value for each point of `material`, at the lattice node
