@@ -41,7 +41,8 @@ inline double vector_bytes(const sim::World& w, double* grid) {
   const double scratch = bytes(w.stencils) + bytes(w.bin_key) + bytes(w.order) +
                          bytes(w.band_start) + bytes(w.thread_counts) + bytes(w.thread_window) +
                          bytes(w.thread_totals) + bytes(w.thread_bands) + bytes(w.band_sums) +
-                         bytes(w.material_specs) + bytes(w.materials);
+                         bytes(w.material_specs) + bytes(w.materials) + bytes(w.scene_index) +
+                         bytes(w.sort_scratch);
   if (grid) *grid = nodes;
   return points + nodes + scratch;
 }

@@ -7,8 +7,11 @@
 // machine's speed drifts by up to 40 % from minute to minute.
 // --own-strength gives every point its own friction angle (28 to 32 degrees
 // in a fixed pattern), as a random field does: each point then has its own
-// Mohr-Coulomb surface (sim/physics/point_strength.hpp).
-//   build/bench/phases [REFINE] [STEPS] [--own-strength]
+// Mohr-Coulomb surface (sim/physics/point_strength.hpp). The points are
+// sorted into cell order every kStepsPerSort steps, as the time loop does
+// (sim/physics/point_order.hpp; timed as "sort"); --scene-order leaves them
+// in scene order.
+//   build/bench/phases [REFINE] [STEPS] [--own-strength] [--scene-order]
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
@@ -18,6 +21,7 @@
 #include <vector>
 
 #include "bench/granular_column.hpp"
+#include "sim/physics/point_order.hpp"
 #include "sim/physics/point_strength.hpp"
 #include "sim/physics/step.hpp"
 #include "sim/scene/seed.hpp"
@@ -38,11 +42,16 @@ struct Hash {
 }  // namespace
 
 int main(int argc, char** argv) {
-  const bool own = argc > 1 && std::string(argv[argc - 1]) == "--own-strength";
-  if (own) --argc;
+  bool own = false, sort = true;
+  for (; argc > 1; --argc) {
+    const std::string last = argv[argc - 1];
+    if (last == "--own-strength") own = true;
+    else if (last == "--scene-order") sort = false;
+    else break;
+  }
   const int refine = argc > 1 ? std::atoi(argv[1]) : 1, steps = argc > 2 ? std::atoi(argv[2]) : 200;
   if (refine < 1 || steps < 1 || argc > 3) {
-    std::fprintf(stderr, "usage: phases [REFINE >= 1] [STEPS >= 1] [--own-strength]\n");
+    std::fprintf(stderr, "usage: phases [REFINE >= 1] [STEPS >= 1] [--own-strength] [--scene-order]\n");
     return 2;
   }
   const sim::Scenario s = bench::granular_column(refine);
@@ -60,35 +69,38 @@ int main(int argc, char** argv) {
   sim::StepReport report;
   for (int k = 0; k < 30; ++k) sim::step(w, in, report);  // past the first, elastic steps
 
-  const char* names[7] = {"locate", "reset", "p2g", "walls", "stress+force", "nodal", "g2p"};
-  double seconds[7] = {};
+  const char* names[8] = {"sort", "locate", "reset", "p2g", "walls", "stress+force", "nodal", "g2p"};
+  double seconds[8] = {};
   for (int k = 0; k < steps; ++k) {
-    Clock::time_point t[8];
+    Clock::time_point t[9];
     t[0] = Clock::now();
-    sim::locate_points(w);
+    if (sort && k % sim::kStepsPerSort == 0) sim::sort_points_by_cell(w);  // as the time loop does
     t[1] = Clock::now();
-    sim::reset_grid(w);
+    sim::locate_points(w);
     t[2] = Clock::now();
-    sim::points_to_grid(w);
+    sim::reset_grid(w);
     t[3] = Clock::now();
-    sim::enforce_walls_on_momentum(w);
+    sim::points_to_grid(w);
     t[4] = Clock::now();
-    sim::update_stress_and_forces(w, in);
+    sim::enforce_walls_on_momentum(w);
     t[5] = Clock::now();
-    sim::update_nodal_momentum(w, in.dt);
+    sim::update_stress_and_forces(w, in);
     t[6] = Clock::now();
-    sim::grid_to_points(w, in);
+    sim::update_nodal_momentum(w, in.dt);
     t[7] = Clock::now();
-    for (int i = 0; i < 7; ++i) seconds[i] += std::chrono::duration<double>(t[i + 1] - t[i]).count();
+    sim::grid_to_points(w, in);
+    t[8] = Clock::now();
+    for (int i = 0; i < 8; ++i) seconds[i] += std::chrono::duration<double>(t[i + 1] - t[i]).count();
   }
   const double point_steps = static_cast<double>(w.points.size()) * steps;
   double total = 0;
-  for (int i = 0; i < 7; ++i) {
+  for (int i = 0; i < 8; ++i) {
     std::printf("%-13s %6.1f ns/pt\n", names[i], seconds[i] / point_steps * 1e9);
     total += seconds[i];
   }
   std::printf("%-13s %6.1f ns/pt (%zu points, %d steps)\n", "total", total / point_steps * 1e9,
               w.points.size(), steps);
+  sim::restore_scene_order(w);  // the hash reads the points in scene order
   Hash hash;
   const sim::Particles& p = w.points;
   for (const auto* v : {&p.x, &p.y, &p.vx, &p.vy, &p.density, &p.sxx, &p.syy, &p.sxy, &p.szz})

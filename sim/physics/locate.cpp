@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "sim/physics/bands.hpp"
+#include "sim/physics/point_order.hpp"
 #include "sim/physics/step.hpp"
 
 namespace sim {
@@ -23,10 +24,10 @@ constexpr int kWindowInts = 5;
 
 // Names the first point off the grid, its material, where it is and the grid.
 void throw_point_left_grid(const World& w) {
-  const int p = w.bad_point;
+  const int p = slot_of_scene_index(w, w.bad_point);
   std::ostringstream msg;
   msg.precision(6);
-  msg << "point " << p << " (material '" << w.material_specs[w.points.material[p]].name
+  msg << "point " << w.bad_point << " (material '" << w.material_specs[w.points.material[p]].name
       << "') at (" << w.points.x[p] << ", " << w.points.y[p] << ") m ";
   if (!std::isfinite(w.points.x[p]) || !std::isfinite(w.points.y[p]))
     msg << "has a non-finite position";
@@ -80,7 +81,7 @@ void compute_stencils(World& w, int first_block, int end_block, int* window) {
       const bool inside = std::isfinite(x[l]) && std::isfinite(y[l]) && st.base_i >= 0 &&
                           st.base_j >= 0 && st.base_i + 2 < g.nx && st.base_j + 2 < g.ny;
       if (!inside) {
-        bad = std::min(bad, first + l);
+        bad = std::min(bad, scene_index_of(w, first + l));
         continue;
       }
       i_lo = std::min(i_lo, st.base_i);
@@ -91,6 +92,26 @@ void compute_stencils(World& w, int first_block, int end_block, int* window) {
   }
   const int partial[kWindowInts] = {i_lo, i_hi, j_lo, j_hi, bad};
   std::copy(partial, partial + kWindowInts, window);
+}
+
+// Within one base node the counting sort leaves points by slot; where the
+// points are stored in cell order (point_order.hpp) that is not scene order,
+// so an insertion sort of the calling thread's bands puts each base node's
+// points in scene order: the order of the points, and so every sum of the
+// step, then does not depend on where they are stored.
+void order_ties_by_scene_index(World& w) {
+  if (w.scene_index.empty()) return;
+  const BandRange r = own_bands(w);
+  const int *key = w.bin_key.data(), *scene = w.scene_index.data();
+  int* order = w.order.data();
+  const int first = w.band_start[r.begin], end = w.band_start[r.end];
+  for (int s = first + 1; s < end; ++s) {
+    const int p = order[s];
+    int t = s;
+    for (; t > first && key[order[t - 1]] == key[p] && scene[order[t - 1]] > scene[p]; --t)
+      order[t] = order[t - 1];
+    order[t] = p;
+  }
 }
 
 // The window of nodes the points touch, from the threads' partials (min and
@@ -196,6 +217,7 @@ bool locate_and_sort(World& w) {
   finish_bands(w, threads);
   for (int p = lo; p < hi; ++p) w.order[counts[w.bin_key[p]]++] = p;
 #pragma omp barrier
+  order_ties_by_scene_index(w);  // the thread's own bands, which only it reads next
   return true;
 }
 

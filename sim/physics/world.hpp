@@ -31,6 +31,9 @@ struct World {
   std::vector<MaterialSpec> material_specs;  // as they stand now (material changes edit them)
   std::vector<MaterialConstants> materials;
   PointStrength strength;  // per point, where a random field set it; empty otherwise
+  // Per stored point, its index in the scene; empty while the points are
+  // stored in scene order (sim/physics/point_order.hpp).
+  std::vector<int> scene_index;
 
   // Scratch, rebuilt every step.
   std::vector<Stencil> stencils;  // per point
@@ -41,10 +44,11 @@ struct World {
   std::vector<int> thread_window; // per thread: touched window and first point off the grid
   std::vector<int> thread_totals; // per thread: points in its run of bins
   int bins = 0;                   // base nodes in the window
-  int bad_point = 0;              // first point off the grid (the number of points if none)
+  int bad_point = 0;              // scene index of the first point off the grid (the number of points if none)
   std::vector<int> thread_bands;  // thread t owns bands [thread_bands[t], thread_bands[t+1])
   std::vector<double> band_sums;  // per band partial sums of the step's reductions
   Team team;                      // the step's threads (sim/physics/team.hpp)
+  std::vector<double> sort_scratch;  // one per-point array, for sort_points_by_cell
 };
 
 // Rows of base nodes per band. Two bands apart never share a node (a stencil

@@ -21,6 +21,10 @@ constexpr double kMaxCourant = 0.5;
 // never leaves a sliver step.
 constexpr double kEventSlack = 1e-9;
 
+// A watchdog scan puts the points back in scene order (point_order.hpp), so
+// the scans fall just before a sort.
+static_assert(kWatchdogScanSteps % kStepsPerSort == 0, "a scan comes just before a sort");
+
 double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
@@ -63,6 +67,7 @@ void Simulation::change_materials(const StageSpec& stage) {
   // stresses stay and are returned to the new surface by the next step.
   // A random field gives each point of the material its own value
   // (sim/physics/point_strength.hpp); the spec keeps the field's mean.
+  restore_scene_order(world_);
   for (const MaterialChange& c : stage.changes) {
     apply_material_change(world_.material_specs[c.material], c.property, c.value);
     world_.materials[c.material] = make_material_constants(world_.material_specs[c.material]);
@@ -118,8 +123,8 @@ void Simulation::close_energy_balance(StageResult& r, double kinetic_start,
                                       double elastic_start) const {
   EnergyBalance& e = r.energy;
   e.external_work = r.gravity_work;
-  e.kinetic_change = kinetic_energy(world_) - kinetic_start;
-  e.elastic_energy_change = elastic_energy(world_) - elastic_start;
+  e.kinetic_change = kinetic_energy(world()) - kinetic_start;
+  e.elastic_energy_change = elastic_energy(world()) - elastic_start;
   e.plastic_dissipation = e.internal_work - e.elastic_energy_change;
   const double residual = e.external_work - e.kinetic_change - e.internal_work - e.damping_loss -
                          e.wall_loss - e.friction_work - e.transfer_loss;
@@ -130,7 +135,7 @@ StageResult Simulation::stage_so_far() const {
   StageResult r = progress_.result;
   r.simulated_time = stage_time_;
   if (r.steps == 0) {
-    r.kinetic_energy = kinetic_energy(world_);
+    r.kinetic_energy = kinetic_energy(world());
     // The moving velocity is only known from a step: the last one run.
     for (auto it = results_.rbegin(); it != results_.rend(); ++it)
       if (it->type != StageType::MaterialChange) {
@@ -148,7 +153,7 @@ StageResult Simulation::stage_so_far() const {
 void Simulation::watch(const StageSpec& stage, const StepReport& report) {
   const bool finite = step_sums_finite(report);
   if (finite && progress_.result.steps % kWatchdogScanSteps != 0) return;
-  const std::string bad = find_bad_point(world_);
+  const std::string bad = find_bad_point(world());
   if (!bad.empty()) stop_run(stage, bad);
   if (!finite) stop_run(stage, "a sum over the points is not finite");
   last_good_ = save_state(std::move(last_good_));
@@ -169,6 +174,7 @@ void Simulation::begin_timed_stage(const StageSpec& stage, Observer& observer) {
   p.result.name = stage.name;
   p.result.type = stage.type;
   stage_time_ = 0;
+  restore_scene_order(world_);
   if (scenario_.output.displacement_reference == "stage-start") {
     world_.points.ref_x = world_.points.x;
     world_.points.ref_y = world_.points.y;
@@ -214,10 +220,11 @@ void Simulation::run_timed_stage(const StageSpec& stage, Observer& observer) {
     if (dt >= until * (1 - kEventSlack)) dt = until;
     const double factor = stage_gravity_factor(stage, stage_time_ + 0.5 * dt);
     const Vec2 g{factor * scenario_.gravity[0], factor * scenario_.gravity[1]};
+    if (r.steps % kStepsPerSort == 0) sort_points_by_cell(world_);
     try {
       step(world_, StepInput{dt, g, stage.damping}, report);
     } catch (const SimulationError& e) {  // a point left the grid
-      stop_run(stage, e.what() + left_grid_advice(world_, scenario_));
+      stop_run(stage, e.what() + left_grid_advice(world(), scenario_));
     }
     stage_time_ += dt;
     time_ += dt;
@@ -239,7 +246,7 @@ void Simulation::run_timed_stage(const StageSpec& stage, Observer& observer) {
     observer.frame(*this, stage, frames_++);  // the stage ended between frame times
   r.simulated_time = stage_time_;
   close_energy_balance(r, p.kinetic_start, p.elastic_start);
-  r.metrics = measure_stage(world_);
+  r.metrics = measure_stage(world());
   r.wall_time += seconds_since(wall_start_);
   finish_stage(stage, r, observer);
 }

@@ -11,6 +11,7 @@
 #include "sim/run/diagnostics.hpp"
 #include "sim/scene/scenario.hpp"
 #include "sim/physics/step.hpp"
+#include "sim/physics/point_order.hpp"
 #include "sim/physics/world.hpp"
 
 namespace sim {
@@ -67,7 +68,11 @@ class Simulation {
   void restore_state(const std::string& bytes, const std::string& label);
 
   const Scenario& scenario() const { return scenario_; }
-  const World& world() const { return world_; }
+  // The world with its points in scene order (sim/physics/point_order.hpp).
+  const World& world() const {
+    restore_scene_order(world_);
+    return world_;
+  }
   double time() const { return time_; }              // since the start of the run
   double stage_time() const { return stage_time_; }  // since the start of this stage
   const std::vector<StageResult>& results() const { return results_; }
@@ -100,7 +105,10 @@ class Simulation {
   [[noreturn]] void stop_run(const StageSpec& stage, const std::string& why) const;
 
   Scenario scenario_;
-  World world_;
+  // Mutable: where the points are stored is not part of the state. The time
+  // loop stores them in cell order for the step, and anything that reads
+  // them, world() first, puts them back in scene order.
+  mutable World world_;
   double time_ = 0, stage_time_ = 0;
   double gravity_factor_ = 0;  // share of full gravity applied; the gravity stage ramps it to 1
   int frames_ = 0;

@@ -162,6 +162,7 @@ std::size_t reusable_stages(const Scenario& s) {
 std::string Simulation::save_state() const { return save_state(std::string()); }
 
 std::string Simulation::save_state(std::string buffer) const {
+  restore_scene_order(world_);  // a state holds the points in scene order
   BinaryWriter w(std::move(buffer));
   w.put(kMagic);
   w.put(kByteOrder);
@@ -204,6 +205,7 @@ std::string Simulation::save_state(std::string buffer) const {
 }
 
 void Simulation::restore_state(const std::string& bytes, const std::string& label) {
+  restore_scene_order(world_);  // the state's points are in scene order
   BinaryReader rd(bytes, label);
   if (bytes.size() < 16 || rd.get<std::uint64_t>() != kMagic)
     rd.fail("not a state saved by this version of landslide");

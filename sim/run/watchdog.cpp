@@ -1,5 +1,7 @@
 #include "sim/run/watchdog.hpp"
 
+#include "sim/physics/point_order.hpp"
+
 #include <cmath>
 #include <sstream>
 
@@ -38,8 +40,8 @@ std::string wall_kind(const Wall& wall) {
 }  // namespace
 
 std::string left_grid_advice(const World& w, const Scenario& s) {
-  const std::size_t p = static_cast<std::size_t>(w.bad_point);
-  if (p >= w.points.size()) return "";
+  if (w.bad_point >= static_cast<int>(w.points.size())) return "";
+  const std::size_t p = static_cast<std::size_t>(slot_of_scene_index(w, w.bad_point));
   const double x = w.points.x[p], y = w.points.y[p];
   if (!std::isfinite(x) || !std::isfinite(y)) return "";
   struct Side {

@@ -1,0 +1,93 @@
+#include "sim/physics/point_order.hpp"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <type_traits>
+
+namespace sim {
+
+namespace {
+
+// Visits every per-point array of the world that is in use (APIC's and the
+// per-point strengths are empty in scenes without them). The asserts count
+// the arrays, so that a new one cannot be left out of the permutation.
+template <class Visit>
+void each_point_array(World& w, Visit visit) {
+  Particles& p = w.points;
+  static_assert(sizeof(Particles) == 20 * sizeof(std::vector<double>),
+                "a per-point array was added to Particles: permute it here");
+  for (auto* v : {&p.x, &p.y, &p.vx, &p.vy, &p.mass, &p.density, &p.sxx, &p.syy, &p.sxy, &p.szz,
+                  &p.cxx, &p.cxy, &p.cyx, &p.cyy, &p.x0, &p.y0, &p.ref_x, &p.ref_y})
+    if (!v->empty()) visit(*v);
+  visit(p.material);
+  visit(p.yielded);
+  PointStrength& s = w.strength;
+  static_assert(sizeof(PointStrength) == 3 * sizeof(std::vector<double>),
+                "a per-point array was added to PointStrength: permute it here");
+  if (s.active()) {
+    visit(s.cohesion);
+    visit(s.friction_angle);
+    visit(s.mohr_coulomb);
+  }
+}
+
+// v[s] := v[from[s]] for every slot s, through `scratch`, which takes v's old memory.
+template <class T>
+void gather(std::vector<T>& v, const std::vector<int>& from, std::vector<T>& scratch, int threads) {
+  const long n = static_cast<long>(v.size());
+  scratch.resize(v.size());
+#pragma omp parallel for num_threads(threads) schedule(static)
+  for (long s = 0; s < n; ++s) scratch[s] = v[from[s]];
+  v.swap(scratch);
+}
+
+// Every per-point array by `from`. The doubles share one scratch array kept
+// in the world, so a sort allocates nothing once the first has sized it.
+void gather_all(World& w, const std::vector<int>& from) {
+  const int threads = team_size(w.team);
+  each_point_array(w, [&](auto& v) {
+    using T = typename std::decay_t<decltype(v)>::value_type;
+    if constexpr (std::is_same_v<T, double>) {
+      gather(v, from, w.sort_scratch, threads);
+    } else {
+      std::vector<T> scratch;
+      gather(v, from, scratch, threads);
+    }
+  });
+}
+
+}  // namespace
+
+void sort_points_by_cell(World& w) {
+  const std::size_t n = w.points.size();
+  if (w.order.size() != n) return;  // no step yet
+  gather_all(w, w.order);
+  std::vector<int> scene(n);
+  for (std::size_t s = 0; s < n; ++s) scene[s] = w.scene_index.empty() ? w.order[s] : w.scene_index[w.order[s]];
+  w.scene_index.swap(scene);
+  for (std::size_t s = 0; s < n; ++s) w.order[s] = static_cast<int>(s);
+}
+
+void restore_scene_order(World& w) {
+  if (w.scene_index.empty()) return;
+  const std::size_t n = w.points.size();
+  std::vector<int> from(n);
+  for (std::size_t s = 0; s < n; ++s) from[w.scene_index[s]] = static_cast<int>(s);
+  gather_all(w, from);
+  if (w.order.size() == n)
+    for (int& s : w.order) s = w.scene_index[s];
+  w.scene_index.clear();
+}
+
+int scene_index_of(const World& w, int slot) {
+  return w.scene_index.empty() ? slot : w.scene_index[slot];
+}
+
+int slot_of_scene_index(const World& w, int scene) {
+  if (w.scene_index.empty()) return scene;
+  return static_cast<int>(std::find(w.scene_index.begin(), w.scene_index.end(), scene) -
+                          w.scene_index.begin());
+}
+
+}  // namespace sim

@@ -1,0 +1,151 @@
+// Points stored in cell order (sim/physics/point_order.hpp): a sort and a
+// restore give back every per-point array bit for bit, and where the points
+// are stored changes no result of the step.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "sim/physics/material.hpp"
+#include "sim/physics/point_order.hpp"
+#include "sim/physics/step.hpp"
+#include "sim/scene/seed.hpp"
+#include "support.hpp"
+
+namespace {
+
+// The paper's slope (soil, house, walls) with its cohesion gone and full
+// gravity from the first step, so that the soil flows and points change
+// cells; APIC or the paper's transfers, with or without a friction angle of
+// its own at every soil point (a random field's case).
+struct Slope {
+  sim::World world;
+  sim::StepInput input;
+};
+
+Slope flowing_slope(sim::TransferScheme transfer, bool own_strength) {
+  sim::Scenario s = sim::load_scenario(LANDSLIDE_SOURCE_DIR "/scenarios/paper-slope-phi20-n1661.json");
+  s.transfer = transfer;
+  Slope slope{sim::make_world(s), {}};
+  sim::World& w = slope.world;
+  double signal = 0;
+  for (std::size_t m = 0; m < w.materials.size(); ++m) {
+    if (w.materials[m].plastic) {
+      sim::apply_material_change(w.material_specs[m], "cohesion", 0.0);
+      w.materials[m] = sim::make_material_constants(w.material_specs[m]);
+      if (own_strength) {
+        std::vector<double> angles(w.points.size());
+        for (std::size_t p = 0; p < angles.size(); ++p) angles[p] = (15.0 + (p * 7 % 11)) * M_PI / 180;
+        sim::set_point_strength(w, static_cast<int>(m), "friction_angle", angles);
+      }
+    }
+    signal = std::max(signal, w.materials[m].wave_speed);
+  }
+  slope.input.dt = 0.4 * s.cell_size / signal;
+  slope.input.gravity = s.gravity;
+  return slope;
+}
+
+// Every double of every step's report, and the points' state at the end (in
+// scene order).
+struct Outcome {
+  std::vector<double> sums;
+  std::uint64_t state = 0;
+};
+
+// `steps` steps; with sort_every > 0 the points are sorted before every
+// sort_every-th step and put back in scene order once midway, as the time
+// loop and its watchdog do.
+Outcome run(Slope slope, int steps, int sort_every) {
+  Outcome out;
+  sim::StepReport r;
+  for (int k = 0; k < steps; ++k) {
+    if (sort_every > 0 && k % sort_every == 0) sim::sort_points_by_cell(slope.world);
+    if (sort_every > 0 && k == steps / 2) sim::restore_scene_order(slope.world);
+    sim::step(slope.world, slope.input, r);
+    for (double v : {r.internal_work, r.gravity_work, r.kinetic_energy, r.moving_kinetic_energy,
+                     r.damping_loss, r.max_signal, r.wall_loss, r.wall_change_on_points,
+                     r.friction_work, r.transfer_loss})
+      out.sums.push_back(v);
+  }
+  sim::restore_scene_order(slope.world);
+  out.state = simtest::state_hash(slope.world.points);
+  return out;
+}
+
+void expect_same_outcome(sim::TransferScheme transfer, bool own_strength) {
+  const Slope slope = flowing_slope(transfer, own_strength);
+  const Outcome scene = run(slope, 160, 0), sorted = run(slope, 160, 3);
+  EXPECT_EQ(scene.state, sorted.state) << "state hash in cell order: " << std::hex << sorted.state;
+  ASSERT_EQ(scene.sums.size(), sorted.sums.size());
+  for (std::size_t i = 0; i < scene.sums.size(); ++i)
+    ASSERT_EQ(std::memcmp(&scene.sums[i], &sorted.sums[i], sizeof(double)), 0)
+        << "step " << i / 10 << ", report value " << i % 10 << ": " << scene.sums[i] << " in scene order, "
+        << sorted.sums[i] << " in cell order";
+}
+
+TEST(PointOrder, WhereThePointsAreStoredChangesNoResult) {
+  expect_same_outcome(sim::TransferScheme::Flip, false);
+}
+
+TEST(PointOrder, NoResultChangesWithApicOrPointStrengths) {
+  expect_same_outcome(sim::TransferScheme::Apic, false);
+  expect_same_outcome(sim::TransferScheme::Flip, true);
+}
+
+template <class T>
+bool same_bytes(const std::vector<T>& a, const std::vector<T>& b) {
+  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0;
+}
+
+TEST(PointOrder, SortAndRestoreGiveBackEveryArray) {
+  Slope slope = flowing_slope(sim::TransferScheme::Apic, true);
+  sim::World& w = slope.world;
+  sim::StepReport r;
+  for (int k = 0; k < 40; ++k) sim::step(w, slope.input, r);
+  const sim::World before = w;
+  sim::sort_points_by_cell(w);
+  ASSERT_EQ(w.scene_index.size(), w.points.size());
+  EXPECT_FALSE(same_bytes(w.points.x, before.points.x)) << "the sort moved no point";
+  sim::restore_scene_order(w);
+  EXPECT_TRUE(w.scene_index.empty());
+  const sim::Particles &p = w.points, &q = before.points;
+  for (auto m : {&sim::Particles::x, &sim::Particles::y, &sim::Particles::vx, &sim::Particles::vy,
+                 &sim::Particles::mass, &sim::Particles::density, &sim::Particles::sxx,
+                 &sim::Particles::syy, &sim::Particles::sxy, &sim::Particles::szz,
+                 &sim::Particles::cxx, &sim::Particles::cxy, &sim::Particles::cyx,
+                 &sim::Particles::cyy, &sim::Particles::x0, &sim::Particles::y0,
+                 &sim::Particles::ref_x, &sim::Particles::ref_y})
+    EXPECT_TRUE(same_bytes(p.*m, q.*m));
+  EXPECT_TRUE(same_bytes(p.material, q.material));
+  EXPECT_TRUE(same_bytes(p.yielded, q.yielded));
+  EXPECT_TRUE(same_bytes(w.strength.cohesion, before.strength.cohesion));
+  EXPECT_TRUE(same_bytes(w.strength.friction_angle, before.strength.friction_angle));
+  EXPECT_TRUE(same_bytes(w.strength.mohr_coulomb, before.strength.mohr_coulomb));
+}
+
+// A point off the grid is named by its index in the scene, wherever it is stored.
+TEST(PointOrder, APointOffTheGridIsNamedByItsSceneIndex) {
+  Slope slope = flowing_slope(sim::TransferScheme::Flip, false);
+  sim::World& w = slope.world;
+  sim::StepReport r;
+  for (int k = 0; k < 20; ++k) sim::step(w, slope.input, r);
+  sim::sort_points_by_cell(w);
+  int scene = static_cast<int>(w.points.size()) / 2;  // one the sort moved
+  while (scene < static_cast<int>(w.points.size()) && sim::slot_of_scene_index(w, scene) == scene) ++scene;
+  ASSERT_LT(scene, static_cast<int>(w.points.size())) << "the sort moved no point";
+  const int slot = sim::slot_of_scene_index(w, scene);
+  ASSERT_EQ(sim::scene_index_of(w, slot), scene);
+  w.points.x[slot] = w.grid.origin_x - 10 * w.grid.h;
+  try {
+    sim::step(w, slope.input, r);
+    FAIL() << "no error for a point off the grid";
+  } catch (const sim::SimulationError& e) {
+    const std::string named = "point " + std::to_string(scene) + " (";
+    EXPECT_EQ(std::string(e.what()).rfind(named, 0), 0u) << e.what();
+  }
+}
+
+}  // namespace
