@@ -105,12 +105,15 @@ void update_eight_stresses(World& w, const int* p, int count, double dt, const M
   StressOf<Lane8> s = before;
   jaumann_rotate(s, 0.5 * dt * (Lxy - Lyx));  // Eq. (24)
   elastic_predictor(s, de, m);                // Eq. (21)
-  StressOf<Lane8> returned = s;               // Eqs. (20)-(23), soil only
-  mc_return::Regions<Lane8> regions;
-  const Int8 elastic = mc_return::return_in_place(m.mohr_coulomb, returned, regions);
-  s = {m.plastic ? returned.xx : s.xx, m.plastic ? returned.yy : s.yy,
-       m.plastic ? returned.xy : s.xy, m.plastic ? returned.zz : s.zz};
-  Int8 yielded = m.plastic ? (elastic ? Int8{} : Int8{} + 1) : was_yielded;
+  Int8 yielded = was_yielded;
+  if (!mc_return::every(m.plastic == 0)) {  // Eqs. (20)-(23), soil only: not for a group of house points
+    StressOf<Lane8> returned = s;
+    mc_return::Regions<Lane8> regions;
+    const Int8 elastic = mc_return::return_in_place(m.mohr_coulomb, returned, regions);
+    s = {m.plastic ? returned.xx : s.xx, m.plastic ? returned.yy : s.yy,
+         m.plastic ? returned.xy : s.xy, m.plastic ? returned.zz : s.zz};
+    yielded = m.plastic ? (elastic ? Int8{} : Int8{} + 1) : was_yielded;
+  }
   const Lane8 rho_after = rho * load8(growth);  // Eq. (25)
   // Torn or loosened soil below its critical density carries no stress
   // (Dunatunga & Kamrin 2015): it counts as yielded, flowing freely.
