@@ -10,13 +10,19 @@
 // Mohr-Coulomb surface (sim/physics/point_strength.hpp). The points are
 // sorted into cell order every kStepsPerSort steps, as the time loop does
 // (sim/physics/point_order.hpp; timed as "sort"); --scene-order leaves them
-// in scene order.
-//   build/bench/phases [REFINE] [STEPS] [--own-strength] [--scene-order]
+// in scene order. --mixed seeds the points in a random order (a fixed
+// shuffle), as a long runout leaves soil whose neighbours were seeded far
+// apart: the case the sort is for, where the column's own seeding order is
+// already close to the step's.
+//   build/bench/phases [REFINE] [STEPS] [--own-strength] [--scene-order] [--mixed]
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
 #include <cmath>
 #include <cstdlib>
+#include <numeric>
+#include <random>
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -42,16 +48,18 @@ struct Hash {
 }  // namespace
 
 int main(int argc, char** argv) {
-  bool own = false, sort = true;
+  bool own = false, sort = true, mixed = false;
   for (; argc > 1; --argc) {
     const std::string last = argv[argc - 1];
     if (last == "--own-strength") own = true;
     else if (last == "--scene-order") sort = false;
+    else if (last == "--mixed") mixed = true;
     else break;
   }
   const int refine = argc > 1 ? std::atoi(argv[1]) : 1, steps = argc > 2 ? std::atoi(argv[2]) : 200;
   if (refine < 1 || steps < 1 || argc > 3) {
-    std::fprintf(stderr, "usage: phases [REFINE >= 1] [STEPS >= 1] [--own-strength] [--scene-order]\n");
+    std::fprintf(stderr, "usage: phases [REFINE >= 1] [STEPS >= 1] [--own-strength] "
+                         "[--scene-order] [--mixed]\n");
     return 2;
   }
   const sim::Scenario s = bench::granular_column(refine);
@@ -61,6 +69,14 @@ int main(int argc, char** argv) {
     for (std::size_t p = 0; p < angles.size(); ++p) angles[p] = (28.0 + (p * 7 % 41) * 0.1) * M_PI / 180;
     sim::set_point_strength(w, 0, "friction_angle", angles);
   }
+  if (mixed) {  // a fixed shuffle taken as the scene's own order
+    w.order.resize(w.points.size());
+    std::iota(w.order.begin(), w.order.end(), 0);
+    std::mt19937 shuffle(17);
+    std::shuffle(w.order.begin(), w.order.end(), shuffle);
+    sim::sort_points_by_cell(w);
+    w.scene_index.clear();
+  }
   double signal = 0;
   for (const auto& m : w.materials) signal = std::max(signal, m.wave_speed);
   sim::StepInput in;
@@ -69,12 +85,13 @@ int main(int argc, char** argv) {
   sim::StepReport report;
   for (int k = 0; k < 30; ++k) sim::step(w, in, report);  // past the first, elastic steps
 
-  const char* names[8] = {"sort", "locate", "reset", "p2g", "walls", "stress+force", "nodal", "g2p"};
+  const char* names[8] = {"sort",         "locate", "reset", "p2g",
+                          "walls",        "stress+force", "nodal", "g2p"};
   double seconds[8] = {};
   for (int k = 0; k < steps; ++k) {
     Clock::time_point t[9];
     t[0] = Clock::now();
-    if (sort && k % sim::kStepsPerSort == 0) sim::sort_points_by_cell(w);  // as the time loop does
+    if (sort && sim::sort_due(w, k)) sim::sort_points_by_cell(w);  // as the time loop
     t[1] = Clock::now();
     sim::locate_points(w);
     t[2] = Clock::now();

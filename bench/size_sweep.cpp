@@ -82,7 +82,7 @@ double timed_steps(sim::World& world, const sim::StepInput& input, int threads, 
   sim::StepReport report;
   const auto start = std::chrono::steady_clock::now();
   for (long k = 0; k < steps; ++k) {
-    if (k % sim::kStepsPerSort == 0) sim::sort_points_by_cell(world);  // as the time loop does
+    if (sim::sort_due(world, k)) sim::sort_points_by_cell(world);  // as the time loop does
     sim::step(world, input, report);
   }
   return steps * static_cast<double>(world.points.size()) / seconds_since(start);

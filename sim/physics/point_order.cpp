@@ -64,7 +64,8 @@ void sort_points_by_cell(World& w) {
   if (w.order.size() != n) return;  // no step yet
   gather_all(w, w.order);
   std::vector<int> scene(n);
-  for (std::size_t s = 0; s < n; ++s) scene[s] = w.scene_index.empty() ? w.order[s] : w.scene_index[w.order[s]];
+  for (std::size_t s = 0; s < n; ++s)
+    scene[s] = w.scene_index.empty() ? w.order[s] : w.scene_index[w.order[s]];
   w.scene_index.swap(scene);
   for (std::size_t s = 0; s < n; ++s) w.order[s] = static_cast<int>(s);
 }
@@ -78,6 +79,14 @@ void restore_scene_order(World& w) {
   if (w.order.size() == n)
     for (int& s : w.order) s = w.scene_index[s];
   w.scene_index.clear();
+}
+
+bool sort_due(const World& w, long steps) {
+  const std::size_t n = w.order.size();
+  if (steps % kStepsPerSort != 0 || n != w.points.size() || n < 2) return false;
+  std::size_t apart = 0;
+  for (std::size_t s = 1; s < n; ++s) apart += w.order[s] != w.order[s - 1] + 1;
+  return static_cast<double>(apart) > kSortAtDisorder * static_cast<double>(n);
 }
 
 int scene_index_of(const World& w, int slot) {

@@ -106,7 +106,8 @@ void update_eight_stresses(World& w, const int* p, int count, double dt, const M
   jaumann_rotate(s, 0.5 * dt * (Lxy - Lyx));  // Eq. (24)
   elastic_predictor(s, de, m);                // Eq. (21)
   Int8 yielded = was_yielded;
-  if (!mc_return::every(m.plastic == 0)) {  // Eqs. (20)-(23), soil only: not for a group of house points
+  // Eqs. (20)-(23), soil only: a group of house points skips the return.
+  if (!mc_return::every(m.plastic == 0)) {
     StressOf<Lane8> returned = s;
     mc_return::Regions<Lane8> regions;
     const Int8 elastic = mc_return::return_in_place(m.mohr_coulomb, returned, regions);

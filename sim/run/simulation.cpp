@@ -220,7 +220,7 @@ void Simulation::run_timed_stage(const StageSpec& stage, Observer& observer) {
     if (dt >= until * (1 - kEventSlack)) dt = until;
     const double factor = stage_gravity_factor(stage, stage_time_ + 0.5 * dt);
     const Vec2 g{factor * scenario_.gravity[0], factor * scenario_.gravity[1]};
-    if (r.steps % kStepsPerSort == 0) sort_points_by_cell(world_);
+    if (sort_due(world_, r.steps)) sort_points_by_cell(world_);
     try {
       step(world_, StepInput{dt, g, stage.damping}, report);
     } catch (const SimulationError& e) {  // a point left the grid
