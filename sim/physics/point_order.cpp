@@ -43,7 +43,8 @@ void gather(std::vector<T>& v, const std::vector<int>& from, std::vector<T>& scr
 }
 
 // Every per-point array by `from`. The doubles share one scratch array kept
-// in the world, so a sort allocates nothing once the first has sized it.
+// in the world; the bytes, the strengths and the scene index still allocate
+// theirs at every sort.
 void gather_all(World& w, const std::vector<int>& from) {
   const int threads = team_size(w.team);
   each_point_array(w, [&](auto& v) {
