@@ -6,6 +6,7 @@
 
 #include "sim/physics/bands.hpp"
 #include "sim/physics/constitutive.hpp"
+#include "sim/physics/exp_lanes.hpp"
 #include "sim/physics/granular.hpp"
 #include "sim/physics/mohr_coulomb_return.hpp"
 #include "sim/physics/step.hpp"
@@ -77,16 +78,13 @@ void update_eight_stresses(World& w, const int* p, int count, double dt, const M
   int q[8];
   const MaterialConstants* mat[8];
   const MohrCoulomb* surface[8];
-  double L[4][8], old[4][8], density[8], mass[8], growth[8];
+  double L[4][8], old[4][8], density[8], mass[8];
   Int8 was_yielded;
   for (int l = 0; l < 8; ++l) {
     q[l] = p[std::min(l, count - 1)];
     double gradient[4];
     velocity_gradient(w.grid, w.stencils[q[l]], gradient);
     for (int c = 0; c < 4; ++c) L[c][l] = gradient[c];
-    // exp(-tr d eps) of Eq. (25), the trace as the lanes below form it: taken
-    // here, one point at a time, where the call spills no vector registers.
-    growth[l] = std::exp(-(dt * gradient[0] + dt * gradient[3]));
     old[0][l] = pts.sxx[q[l]];
     old[1][l] = pts.syy[q[l]];
     old[2][l] = pts.sxy[q[l]];
@@ -115,7 +113,7 @@ void update_eight_stresses(World& w, const int* p, int count, double dt, const M
          m.plastic ? returned.xy : s.xy, m.plastic ? returned.zz : s.zz};
     yielded = m.plastic ? (elastic ? Int8{} : Int8{} + 1) : was_yielded;
   }
-  const Lane8 rho_after = rho * load8(growth);  // Eq. (25)
+  const Lane8 rho_after = rho * exp_lanes(-(de.xx + de.yy));  // Eq. (25)
   // Torn or loosened soil below its critical density carries no stress
   // (Dunatunga & Kamrin 2015): it counts as yielded, flowing freely.
   yielded = disconnect_below_critical_density(rho_after, m, s) ? Int8{} + 1 : yielded;
