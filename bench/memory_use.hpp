@@ -19,17 +19,15 @@ double bytes(const std::vector<T, A>& v) {
   return static_cast<double>(v.capacity() * sizeof(T));
 }
 
-// Bytes the solver's state takes: every std::vector in the world (keep in
-// step with sim/physics/world.hpp, particles.hpp and grid.hpp), the grid's
+// Bytes the solver's state takes: every std::vector in the world (the
+// points' through sim::for_each_point_array; keep the rest in step with
+// sim/physics/world.hpp and grid.hpp), the grid's
 // arrays counted over the window of nodes the last step touched, as only
 // the pages a step writes take memory (sim/physics/node_array.hpp). The
 // grid's share goes to `grid`.
 inline double vector_bytes(const sim::World& w, double* grid) {
-  const sim::Particles& p = w.points;
-  double points = bytes(p.material) + bytes(p.yielded);
-  for (const auto* v : {&p.x, &p.y, &p.vx, &p.vy, &p.mass, &p.density, &p.sxx, &p.syy, &p.sxy,
-                        &p.szz, &p.x0, &p.y0, &p.ref_x, &p.ref_y})
-    points += bytes(*v);
+  double points = 0;
+  sim::for_each_point_array(w, [&](const auto& v) { points += bytes(v); });
   const sim::Grid& g = w.grid;
   double per_node = 2 * sizeof(std::uint8_t);  // fix_x, fix_y
   for (const auto* v : {&g.mass, &g.px, &g.py, &g.vx, &g.vy, &g.fx, &g.fy, &g.ax, &g.ay,

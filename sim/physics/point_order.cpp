@@ -9,29 +9,6 @@ namespace sim {
 
 namespace {
 
-// Visits every per-point array of the world that is in use (APIC's and the
-// per-point strengths are empty in scenes without them). The asserts count
-// the arrays, so that a new one cannot be left out of the permutation.
-template <class Visit>
-void each_point_array(World& w, Visit visit) {
-  Particles& p = w.points;
-  static_assert(sizeof(Particles) == 20 * sizeof(std::vector<double>),
-                "a per-point array was added to Particles: permute it here");
-  for (auto* v : {&p.x, &p.y, &p.vx, &p.vy, &p.mass, &p.density, &p.sxx, &p.syy, &p.sxy, &p.szz,
-                  &p.cxx, &p.cxy, &p.cyx, &p.cyy, &p.x0, &p.y0, &p.ref_x, &p.ref_y})
-    if (!v->empty()) visit(*v);
-  visit(p.material);
-  visit(p.yielded);
-  PointStrength& s = w.strength;
-  static_assert(sizeof(PointStrength) == 3 * sizeof(std::vector<double>),
-                "a per-point array was added to PointStrength: permute it here");
-  if (s.active()) {
-    visit(s.cohesion);
-    visit(s.friction_angle);
-    visit(s.mohr_coulomb);
-  }
-}
-
 // v[s] := v[from[s]] for every slot s, through `scratch`, which takes v's old memory.
 template <class T>
 void gather(std::vector<T>& v, const std::vector<int>& from, std::vector<T>& scratch, int threads) {
@@ -47,7 +24,7 @@ void gather(std::vector<T>& v, const std::vector<int>& from, std::vector<T>& scr
 // theirs at every sort.
 void gather_all(World& w, const std::vector<int>& from) {
   const int threads = team_size(w.team);
-  each_point_array(w, [&](auto& v) {
+  for_each_point_array(w, [&](auto& v) {
     using T = typename std::decay_t<decltype(v)>::value_type;
     if constexpr (std::is_same_v<T, double>) {
       gather(v, from, w.sort_scratch, threads);

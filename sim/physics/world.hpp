@@ -51,6 +51,31 @@ struct World {
   std::vector<double> sort_scratch;  // one per-point array, for sort_points_by_cell
 };
 
+// Visits every per-point array of the world that is in use (APIC's and the
+// per-point strengths are empty in scenes without them), for whatever must
+// reach them all: the sort into cell order (point_order.cpp), the count of
+// memory (bench/memory_use.hpp). W is World or const World. The asserts
+// count the arrays, so that a new one cannot be left out.
+template <class W, class Visit>
+void for_each_point_array(W& w, Visit visit) {
+  auto& p = w.points;
+  static_assert(sizeof(Particles) == 20 * sizeof(std::vector<double>),
+                "a per-point array was added to Particles: visit it here");
+  for (auto* v : {&p.x, &p.y, &p.vx, &p.vy, &p.mass, &p.density, &p.sxx, &p.syy, &p.sxy, &p.szz,
+                  &p.cxx, &p.cxy, &p.cyx, &p.cyy, &p.x0, &p.y0, &p.ref_x, &p.ref_y})
+    if (!v->empty()) visit(*v);
+  visit(p.material);
+  visit(p.yielded);
+  auto& s = w.strength;
+  static_assert(sizeof(PointStrength) == 3 * sizeof(std::vector<double>),
+                "a per-point array was added to PointStrength: visit it here");
+  if (s.active()) {
+    visit(s.cohesion);
+    visit(s.friction_angle);
+    visit(s.mohr_coulomb);
+  }
+}
+
 // Rows of base nodes per band. Two bands apart never share a node (a stencil
 // spans 3 rows), so every other band can be scattered to the grid at once.
 constexpr int kBandRows = 4;
