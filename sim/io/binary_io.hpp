@@ -37,6 +37,18 @@ class BinaryWriter {
     put(std::uint64_t(v.size()));
     bytes_.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(T));
   }
+  // v[from[0]], v[from[1]], ...: as put_vector(v) of the reordered vector,
+  // without making it. An empty `from` is the identity.
+  template <class T>
+  void put_vector(const std::vector<T>& v, const std::vector<int>& from) {
+    static_assert(std::is_trivially_copyable<T>::value, "raw bytes only");
+    if (from.empty()) return put_vector(v);
+    put(std::uint64_t(from.size()));
+    const std::size_t at = bytes_.size();
+    bytes_.resize(at + from.size() * sizeof(T));
+    char* out = &bytes_[at];
+    for (std::size_t i = 0; i < from.size(); ++i) std::memcpy(out + i * sizeof(T), &v[from[i]], sizeof(T));
+  }
   void put_string(const std::string& s) {
     put(std::uint64_t(s.size()));
     bytes_.append(s);

@@ -48,13 +48,16 @@ void sort_points_by_cell(World& w) {
   for (std::size_t s = 0; s < n; ++s) w.order[s] = static_cast<int>(s);
 }
 
+std::vector<int> slots_in_scene_order(const World& w) {
+  std::vector<int> slots(w.scene_index.size());
+  for (std::size_t s = 0; s < slots.size(); ++s) slots[w.scene_index[s]] = static_cast<int>(s);
+  return slots;
+}
+
 void restore_scene_order(World& w) {
   if (w.scene_index.empty()) return;
-  const std::size_t n = w.points.size();
-  std::vector<int> from(n);
-  for (std::size_t s = 0; s < n; ++s) from[w.scene_index[s]] = static_cast<int>(s);
-  gather_all(w, from);
-  if (w.order.size() == n)
+  gather_all(w, slots_in_scene_order(w));
+  if (w.order.size() == w.points.size())
     for (int& s : w.order) s = w.scene_index[s];
   w.scene_index.clear();
 }

@@ -41,6 +41,11 @@ void sort_points_by_cell(World& world);
 // last step's order follows them, so the next sort is by cell again.
 void restore_scene_order(World& world);
 
+// The slot of each point, in scene order (slots[scene] = slot), for reading
+// the points in scene order where they are stored; empty while they are
+// stored in scene order.
+std::vector<int> slots_in_scene_order(const World& world);
+
 // The index in the scene of the point stored at `slot`, and the slot of the
 // point with scene index `scene` (a search: for error messages).
 int scene_index_of(const World& world, int slot);

@@ -21,10 +21,6 @@ constexpr double kMaxCourant = 0.5;
 // never leaves a sliver step.
 constexpr double kEventSlack = 1e-9;
 
-// A watchdog scan puts the points back in scene order (point_order.hpp), so
-// the scans fall just before a sort.
-static_assert(kWatchdogScanSteps % kStepsPerSort == 0, "a scan comes just before a sort");
-
 double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
@@ -153,7 +149,7 @@ StageResult Simulation::stage_so_far() const {
 void Simulation::watch(const StageSpec& stage, const StepReport& report) {
   const bool finite = step_sums_finite(report);
   if (finite && progress_.result.steps % kWatchdogScanSteps != 0) return;
-  const std::string bad = find_bad_point(world());
+  const std::string bad = find_bad_point(world_);  // where the points are stored
   if (!bad.empty()) stop_run(stage, bad);
   if (!finite) stop_run(stage, "a sum over the points is not finite");
   last_good_ = save_state(std::move(last_good_));

@@ -107,7 +107,8 @@ class Simulation {
   Scenario scenario_;
   // Mutable: where the points are stored is not part of the state. The time
   // loop stores them in cell order for the step, and anything that reads
-  // them, world() first, puts them back in scene order.
+  // them, world() first, puts them back in scene order; the watchdog's scan
+  // and save_state() read them where they are.
   mutable World world_;
   double time_ = 0, stage_time_ = 0;
   double gravity_factor_ = 0;  // share of full gravity applied; the gravity stage ramps it to 1

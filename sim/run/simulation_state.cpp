@@ -161,8 +161,12 @@ std::size_t reusable_stages(const Scenario& s) {
 
 std::string Simulation::save_state() const { return save_state(std::string()); }
 
+// A state holds the points in scene order; they are written in that order
+// where they are stored (point_order.hpp), not moved there: the watchdog saves
+// the state every kWatchdogScanSteps steps, and moving the points back and
+// forth cost two permutations of every point array each time.
 std::string Simulation::save_state(std::string buffer) const {
-  restore_scene_order(world_);  // a state holds the points in scene order
+  const std::vector<int> from = slots_in_scene_order(world_);
   BinaryWriter w(std::move(buffer));
   w.put(kMagic);
   w.put(kByteOrder);
@@ -190,16 +194,17 @@ std::string Simulation::save_state(std::string buffer) const {
   for (const MaterialSpec& m : world_.material_specs) put_material(w, m);
   const Particles& pts = world_.points;
   w.put(std::uint64_t(pts.size()));
-  for (const std::vector<double>* a : point_arrays(pts)) w.put_vector(*a);
-  w.put_vector(pts.material);
-  w.put_vector(pts.yielded);
+  for (const std::vector<double>* a : point_arrays(pts)) w.put_vector(*a, from);
+  w.put_vector(pts.material, from);
+  w.put_vector(pts.yielded, from);
   if (world_.transfer == TransferScheme::Apic)
-    for (const std::vector<double>* a : {&pts.cxx, &pts.cxy, &pts.cyx, &pts.cyy}) w.put_vector(*a);
+    for (const std::vector<double>* a : {&pts.cxx, &pts.cxy, &pts.cyx, &pts.cyy})
+      w.put_vector(*a, from);
   // Per-point strength of a random field; the returns are rebuilt from it.
   w.put(world_.strength.active());
   if (world_.strength.active()) {
-    w.put_vector(world_.strength.cohesion);
-    w.put_vector(world_.strength.friction_angle);
+    w.put_vector(world_.strength.cohesion, from);
+    w.put_vector(world_.strength.friction_angle, from);
   }
   return w.take();
 }

@@ -14,13 +14,29 @@ bool step_sums_finite(const StepReport& r) {
 
 namespace {
 
-std::string describe(const World& w, std::size_t p, const std::string& what) {
+// `slot`: where the point is stored; `scene`: its index in the scene, the
+// name users see (sim/physics/point_order.hpp).
+std::string describe(const World& w, std::size_t slot, int scene, const std::string& what) {
   const Particles& pts = w.points;
   std::ostringstream msg;
   msg.precision(6);
-  msg << "point " << p << " (material '" << w.material_specs[pts.material[p]].name << "') at ("
-      << pts.x[p] << ", " << pts.y[p] << ") m " << what;
+  msg << "point " << scene << " (material '" << w.material_specs[pts.material[slot]].name
+      << "') at (" << pts.x[slot] << ", " << pts.y[slot] << ") m " << what;
   return msg.str();
+}
+
+bool finite_motion(const Particles& pts, std::size_t p) {
+  return std::isfinite(pts.vx[p]) && std::isfinite(pts.vy[p]) && std::isfinite(pts.x[p]) &&
+         std::isfinite(pts.y[p]);
+}
+
+bool finite_state(const Particles& pts, std::size_t p) {
+  return finite_motion(pts, p) && std::isfinite(pts.sxx[p]) && std::isfinite(pts.syy[p]) &&
+         std::isfinite(pts.sxy[p]) && std::isfinite(pts.szz[p]) && std::isfinite(pts.density[p]);
+}
+
+bool over_compressed(const World& w, std::size_t p) {
+  return w.points.density[p] > kMaxCompression * w.material_specs[w.points.material[p]].density;
 }
 
 std::string wall_kind(const Wall& wall) {
@@ -73,38 +89,38 @@ std::string left_grid_advice(const World& w, const Scenario& s) {
   return "";
 }
 
+// The points are read where they are stored, which may be cell order
+// (point_order.hpp): the bad point named is the first by scene index, and
+// "more points" are those after it in the scene.
 std::string find_bad_point(const World& w) {
   const Particles& pts = w.points;
   const std::size_t n = pts.size();
-  for (std::size_t p = 0; p < n; ++p) {
-    const bool finite = std::isfinite(pts.x[p]) && std::isfinite(pts.y[p]) &&
-                        std::isfinite(pts.vx[p]) && std::isfinite(pts.vy[p]) &&
-                        std::isfinite(pts.sxx[p]) && std::isfinite(pts.syy[p]) &&
-                        std::isfinite(pts.sxy[p]) && std::isfinite(pts.szz[p]) &&
-                        std::isfinite(pts.density[p]);
-    if (!finite) {
-      // A value that turned non-finite in a step has spread through the grid
-      // to its neighbours by the step's end: say how far.
-      std::size_t others = 0;
-      for (std::size_t q = p + 1; q < n; ++q)
-        others += !(std::isfinite(pts.vx[q]) && std::isfinite(pts.vy[q]) &&
-                    std::isfinite(pts.x[q]) && std::isfinite(pts.y[q]));
-      std::ostringstream v;
-      v << "has a non-finite value: velocity (" << pts.vx[p] << ", " << pts.vy[p]
-        << ") m/s, stress (" << pts.sxx[p] << ", " << pts.syy[p] << ", " << pts.sxy[p] << ", "
-        << pts.szz[p] << ") Pa, density " << pts.density[p] << " kg/m^3 (and " << others
-        << " more points with a non-finite position or velocity)";
-      return describe(w, p, v.str());
-    }
-    const double initial = w.material_specs[pts.material[p]].density;
-    if (pts.density[p] > kMaxCompression * initial) {
-      std::ostringstream v;
-      v << "was compressed to density " << pts.density[p] << " kg/m^3, above the bound "
-        << kMaxCompression << " x " << initial << " kg/m^3";
-      return describe(w, p, v.str());
-    }
+  std::size_t slot = n;
+  int first = static_cast<int>(n);
+  for (std::size_t s = 0; s < n; ++s) {
+    if (finite_state(pts, s) && !over_compressed(w, s)) continue;
+    const int scene = scene_index_of(w, static_cast<int>(s));
+    if (scene < first) first = scene, slot = s;
   }
-  return "";
+  if (slot == n) return "";
+  if (!finite_state(pts, slot)) {
+    // A value that turned non-finite in a step has spread through the grid
+    // to its neighbours by the step's end: say how far.
+    std::size_t others = 0;
+    for (std::size_t s = 0; s < n; ++s)
+      others += scene_index_of(w, static_cast<int>(s)) > first && !finite_motion(pts, s);
+    std::ostringstream v;
+    v << "has a non-finite value: velocity (" << pts.vx[slot] << ", " << pts.vy[slot]
+      << ") m/s, stress (" << pts.sxx[slot] << ", " << pts.syy[slot] << ", " << pts.sxy[slot]
+      << ", " << pts.szz[slot] << ") Pa, density " << pts.density[slot] << " kg/m^3 (and "
+      << others << " more points with a non-finite position or velocity)";
+    return describe(w, slot, first, v.str());
+  }
+  const double initial = w.material_specs[pts.material[slot]].density;
+  std::ostringstream v;
+  v << "was compressed to density " << pts.density[slot] << " kg/m^3, above the bound "
+    << kMaxCompression << " x " << initial << " kg/m^3";
+  return describe(w, slot, first, v.str());
 }
 
 }  // namespace sim

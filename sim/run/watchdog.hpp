@@ -41,9 +41,10 @@ class WatchdogError : public SimulationError {
 // velocity, stress or density shows up in them.
 bool step_sums_finite(const StepReport& report);
 
-// The first point with a non-finite position, velocity, stress or density,
-// or a density above the bound: a message naming it, its position and its
-// material; "" when every point is within the limits.
+// The first point (by scene index, wherever it is stored) with a non-finite
+// position, velocity, stress or density, or a density above the bound: a
+// message naming it, its position and its material; "" when every point is
+// within the limits.
 std::string find_bad_point(const World& world);
 
 // What to do about world.bad_point, the first point that left the grid: the

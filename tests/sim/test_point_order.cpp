@@ -5,12 +5,14 @@
 
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <string>
 #include <vector>
 
 #include "sim/physics/material.hpp"
 #include "sim/physics/point_order.hpp"
 #include "sim/physics/step.hpp"
+#include "sim/run/watchdog.hpp"
 #include "sim/scene/seed.hpp"
 #include "support.hpp"
 
@@ -150,13 +152,20 @@ TEST(PointOrder, SortsOnlyPointsThatHaveLeftCellOrder) {
   EXPECT_TRUE(sim::sort_due(w, 2 * sim::kStepsPerSort)) << "back in scene order";
 }
 
+// The flowing slope after 20 steps, its points stored in cell order.
+Slope slope_in_cell_order() {
+  Slope slope = flowing_slope(sim::TransferScheme::Flip, false);
+  sim::StepReport r;
+  for (int k = 0; k < 20; ++k) sim::step(slope.world, slope.input, r);
+  sim::sort_points_by_cell(slope.world);
+  return slope;
+}
+
 // A point off the grid is named by its index in the scene, wherever it is stored.
 TEST(PointOrder, APointOffTheGridIsNamedByItsSceneIndex) {
-  Slope slope = flowing_slope(sim::TransferScheme::Flip, false);
+  Slope slope = slope_in_cell_order();
   sim::World& w = slope.world;
   sim::StepReport r;
-  for (int k = 0; k < 20; ++k) sim::step(w, slope.input, r);
-  sim::sort_points_by_cell(w);
   const int n = static_cast<int>(w.points.size());
   int scene = n / 2;  // the first from the middle on that the sort moved
   while (scene < n && sim::slot_of_scene_index(w, scene) == scene) ++scene;
@@ -171,6 +180,33 @@ TEST(PointOrder, APointOffTheGridIsNamedByItsSceneIndex) {
     const std::string named = "point " + std::to_string(scene) + " (";
     EXPECT_EQ(std::string(e.what()).rfind(named, 0), 0u) << e.what();
   }
+}
+
+
+// The watchdog reads the points where they are stored (sim/run/watchdog.cpp):
+// in cell order it names the same point, by scene index, with the same
+// values and count of others, as in scene order.
+TEST(PointOrder, TheWatchdogNamesTheSamePointInEitherOrder) {
+  Slope slope = slope_in_cell_order();
+  sim::World& w = slope.world;
+  const int n = static_cast<int>(w.points.size());
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  // Two bad points, the later one in the scene stored first: the scan must
+  // not name the first it meets.
+  int late = n - 1;
+  while (late > 0 && sim::slot_of_scene_index(w, late) >= sim::slot_of_scene_index(w, n / 3)) --late;
+  ASSERT_GT(late, n / 3) << "no later point stored before scene point " << n / 3;
+  ASSERT_NE(late, n / 2);
+  w.points.vy[sim::slot_of_scene_index(w, late)] = nan;
+  w.points.sxy[sim::slot_of_scene_index(w, n / 3)] = nan;
+  w.points.x[sim::slot_of_scene_index(w, n / 2)] = nan;  // one "more point" after it
+  const std::string sorted = sim::find_bad_point(w);
+  sim::restore_scene_order(w);
+  const std::string in_scene_order = sim::find_bad_point(w);
+  EXPECT_EQ(sorted, in_scene_order);
+  const std::string named = "point " + std::to_string(n / 3) + " (";
+  EXPECT_EQ(sorted.rfind(named, 0), 0u) << sorted;
+  EXPECT_NE(sorted.find("(and 2 more points"), std::string::npos) << sorted;
 }
 
 }  // namespace
