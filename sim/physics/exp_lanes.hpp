@@ -10,7 +10,10 @@
 // the order of every operation, fused or not, are those of the exp of
 // Debian 12's glibc 2.36 (its x86-64 FMA variant, read off its machine code),
 // so each lane is bit for bit what std::exp returns there: the step's results
-// did not move (ExpLanes.* compare the two on millions of arguments). Lanes
+// did not move (ExpLanes.* compare the two on millions of arguments). glibc
+// picks that variant on processors with FMA and another, which rounds some
+// arguments differently in the last bit, on those without; exp_lanes does the
+// same arithmetic on every machine (std::fma is exact in software). Lanes
 // outside the table's range, |x| < 2^-54 or |x| >= 512 (0, infinities,
 // NaN, overflow), take std::exp itself.
 #pragma once
