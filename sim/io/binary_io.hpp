@@ -47,7 +47,8 @@ class BinaryWriter {
     const std::size_t at = bytes_.size();
     bytes_.resize(at + from.size() * sizeof(T));
     char* out = &bytes_[at];
-    for (std::size_t i = 0; i < from.size(); ++i) std::memcpy(out + i * sizeof(T), &v[from[i]], sizeof(T));
+    for (std::size_t i = 0; i < from.size(); ++i)
+      std::memcpy(out + i * sizeof(T), &v[from[i]], sizeof(T));
   }
   void put_string(const std::string& s) {
     put(std::uint64_t(s.size()));
