@@ -1,8 +1,9 @@
 // glibc picks exp, log, sin and the rest by processor: variants with FMA
 // and AVX2, or without, which may round some arguments differently in the
 // last bit. The step no longer calls one whose result reaches the points
-// (the density update's exp is sim/physics/exp_lanes.hpp), so the same
-// binary gives the same bits whichever variant glibc takes. GLIBC_TUNABLES
+// (the density update's exp is sim/physics/exp_lanes.hpp; the materials'
+// sin and cos, taken once, are libm's and agree here), so the same binary
+// gives the same bits whichever variant glibc takes. GLIBC_TUNABLES
 // makes a child take the variants of a processor without FMA and AVX2; with
 // std::exp in the step, e0407aa's binary gave the 1661-point slope a runout
 // of 16.137817597509645 m that way and 16.137817597509247 m without.
