@@ -35,8 +35,12 @@ bool finite_state(const Particles& pts, std::size_t p) {
          std::isfinite(pts.sxy[p]) && std::isfinite(pts.szz[p]) && std::isfinite(pts.density[p]);
 }
 
+double initial_density(const World& w, std::size_t p) {
+  return w.material_specs[w.points.material[p]].density;
+}
+
 bool over_compressed(const World& w, std::size_t p) {
-  return w.points.density[p] > kMaxCompression * w.material_specs[w.points.material[p]].density;
+  return w.points.density[p] > kMaxCompression * initial_density(w, p);
 }
 
 std::string wall_kind(const Wall& wall) {
@@ -116,7 +120,7 @@ std::string find_bad_point(const World& w) {
       << others << " more points with a non-finite position or velocity)";
     return describe(w, slot, first, v.str());
   }
-  const double initial = w.material_specs[pts.material[slot]].density;
+  const double initial = initial_density(w, slot);
   std::ostringstream v;
   v << "was compressed to density " << pts.density[slot] << " kg/m^3, above the bound "
     << kMaxCompression << " x " << initial << " kg/m^3";

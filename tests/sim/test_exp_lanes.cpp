@@ -5,7 +5,6 @@
 
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <limits>
 #include <random>
 #include <vector>
@@ -14,11 +13,7 @@
 
 namespace {
 
-std::uint64_t bits_of(double x) {
-  std::uint64_t b;
-  std::memcpy(&b, &x, sizeof b);
-  return b;
-}
+std::uint64_t bits_of(double x) { return sim::exp_detail::same_bits<std::uint64_t>(x); }
 
 // glibc picks its exp by processor: the FMA variant, whose arithmetic
 // exp_lanes repeats on every machine (std::fma is exact in software too),
@@ -71,10 +66,7 @@ TEST(ExpLanes, SameBitsAsStdExpOverTheWholeRange) {
   std::vector<double> xs;
   for (int i = 0; i < 1'000'000; ++i) xs.push_back(wide(rng));
   for (int i = 0; i < 1'000'000; ++i) {  // any bit pattern: NaNs, infinities, subnormals
-    double x;
-    const std::uint64_t b = rng();
-    std::memcpy(&x, &b, sizeof x);
-    xs.push_back(x);
+    xs.push_back(sim::exp_detail::same_bits<double>(std::uint64_t{rng()}));
   }
   const double inf = std::numeric_limits<double>::infinity();
   const double edges[] = {0.0, -0.0, 0x1p-54, -0x1p-54, 0x1.fffffffffffffp-55, 0x1p-53, 511.99,
