@@ -13,8 +13,10 @@
 // in scene order. --mixed seeds the points in a random order (a fixed
 // shuffle), as a long runout leaves soil whose neighbours were seeded far
 // apart: the case the sort is for, where the column's own seeding order is
-// already close to the step's.
-//   build/bench/phases [REFINE] [STEPS] [--own-strength] [--scene-order] [--mixed]
+// already close to the step's. --threads N steps with a team of N threads,
+// as sim::step does, with a barrier after every phase (the time a phase's
+// threads wait for each other is counted in that phase).
+//   build/bench/phases [REFINE] [STEPS] [--own-strength] [--scene-order] [--mixed] [--threads N]
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
@@ -23,6 +25,7 @@
 #include <numeric>
 #include <random>
 #include <algorithm>
+#include <omp.h>
 #include <string>
 #include <vector>
 
@@ -49,17 +52,21 @@ struct Hash {
 
 int main(int argc, char** argv) {
   bool own = false, sort = true, mixed = false;
+  int threads = 1;
   for (; argc > 1; --argc) {
     const std::string last = argv[argc - 1];
-    if (last == "--own-strength") own = true;
+    if (argc > 2 && std::string(argv[argc - 2]) == "--threads") {
+      threads = std::atoi(last.c_str());
+      --argc;
+    } else if (last == "--own-strength") own = true;
     else if (last == "--scene-order") sort = false;
     else if (last == "--mixed") mixed = true;
     else break;
   }
   const int refine = argc > 1 ? std::atoi(argv[1]) : 1, steps = argc > 2 ? std::atoi(argv[2]) : 200;
-  if (refine < 1 || steps < 1 || argc > 3) {
+  if (refine < 1 || steps < 1 || argc > 3 || threads < 1) {
     std::fprintf(stderr, "usage: phases [REFINE >= 1] [STEPS >= 1] [--own-strength] "
-                         "[--scene-order] [--mixed]\n");
+                         "[--scene-order] [--mixed] [--threads N >= 1]\n");
     return 2;
   }
   const sim::Scenario s = bench::granular_column(refine);
@@ -93,20 +100,30 @@ int main(int argc, char** argv) {
     t[0] = Clock::now();
     if (sort && sim::sort_due(w, k)) sim::sort_points_by_cell(w);  // as the time loop
     t[1] = Clock::now();
-    sim::locate_points(w);
-    t[2] = Clock::now();
-    sim::reset_grid(w);
-    t[3] = Clock::now();
-    sim::points_to_grid(w);
-    t[4] = Clock::now();
-    sim::enforce_walls_on_momentum(w);
-    t[5] = Clock::now();
-    sim::update_stress_and_forces(w, in);
-    t[6] = Clock::now();
-    sim::update_nodal_momentum(w, in.dt);
-    t[7] = Clock::now();
-    sim::grid_to_points(w, in);
-    t[8] = Clock::now();
+    sim::prepare_locate(w);
+#pragma omp parallel num_threads(threads)
+    {
+      // Thread 0 reads the clock after the barrier that ends each phase.
+      const auto mark = [&](int i) {
+#pragma omp barrier
+#pragma omp master
+        t[i] = Clock::now();
+      };
+      if (!sim::locate_and_sort(w)) std::abort();
+      mark(2);
+      sim::reset_grid(w);
+      mark(3);
+      sim::points_to_grid(w);
+      mark(4);
+      sim::enforce_walls_on_momentum(w);
+      mark(5);
+      sim::update_stress_and_forces(w, in);
+      mark(6);
+      sim::update_nodal_momentum(w, in.dt);
+      mark(7);
+      sim::grid_to_points(w, in);
+      mark(8);
+    }
     for (int i = 0; i < 8; ++i) seconds[i] += std::chrono::duration<double>(t[i + 1] - t[i]).count();
   }
   const double point_steps = static_cast<double>(w.points.size()) * steps;
@@ -115,8 +132,8 @@ int main(int argc, char** argv) {
     std::printf("%-13s %6.1f ns/pt\n", names[i], seconds[i] / point_steps * 1e9);
     total += seconds[i];
   }
-  std::printf("%-13s %6.1f ns/pt (%zu points, %d steps)\n", "total", total / point_steps * 1e9,
-              w.points.size(), steps);
+  std::printf("%-13s %6.1f ns/pt (%zu points, %d steps, %d threads)\n", "total",
+              total / point_steps * 1e9, w.points.size(), steps, threads);
   sim::restore_scene_order(w);  // the hash reads the points in scene order
   Hash hash;
   const sim::Particles& p = w.points;
