@@ -17,8 +17,15 @@ namespace sim {
 
 namespace {
 
-// Window partials per thread: i_lo, i_hi, j_lo, j_hi, first point off the grid.
-constexpr int kWindowInts = 5;
+// Window partials per thread: i_lo, i_hi, j_lo, j_hi, first point off the
+// grid, points off the bins.
+constexpr int kWindowInts = 6;
+
+// The bins a step counts its points in while it computes their stencils are
+// the last step's base nodes and this margin around them: a point moves less
+// than a cell in a stable step (Courant number at most 1). A point off them
+// sends the step back to count again in bins fitted to its window.
+constexpr int kBinMargin = 1;
 
 }  // namespace
 
@@ -42,12 +49,16 @@ namespace {
 
 // Stencils of the points of Lane8 blocks [first_block, end_block), eight
 // points at a time (gimp.hpp; the last block repeats its last point where the
-// points run out). Writes the thread's window partials to `window`.
-void compute_stencils(World& w, int first_block, int end_block, int* window) {
+// points run out), each point counted in its bin (`counts`, the thread's,
+// zeroed here) while its base node is at hand. Writes the thread's window
+// partials to `window`.
+void compute_stencils(World& w, int first_block, int end_block, int* counts, int* window) {
   const Particles& pts = w.points;
   const Grid& g = w.grid;
   const int n = static_cast<int>(pts.size());
-  int i_lo = g.nx, i_hi = -1, j_lo = g.ny, j_hi = -1, bad = n;
+  const int bin_rows = w.bin_width > 0 ? w.bins / w.bin_width : 0;
+  std::fill(counts, counts + w.bins, 0);
+  int i_lo = g.nx, i_hi = -1, j_lo = g.ny, j_hi = -1, bad = n, off_bins = 0;
   for (int blk = first_block; blk < end_block; ++blk) {
     const int first = 8 * blk, count = std::min(8, n - first);
     Lane8 x, y;
@@ -88,9 +99,16 @@ void compute_stencils(World& w, int first_block, int end_block, int* window) {
       i_hi = std::max(i_hi, st.base_i);
       j_lo = std::min(j_lo, st.base_j);
       j_hi = std::max(j_hi, st.base_j);
+      const int bi = st.base_i - w.bin_i0, bj = st.base_j - w.bin_j0;
+      if (bi < 0 || bi >= w.bin_width || bj < 0 || bj >= bin_rows) {
+        ++off_bins;
+        continue;
+      }
+      w.bin_key[first + l] = bj * w.bin_width + bi;
+      ++counts[w.bin_key[first + l]];
     }
   }
-  const int partial[kWindowInts] = {i_lo, i_hi, j_lo, j_hi, bad};
+  const int partial[kWindowInts] = {i_lo, i_hi, j_lo, j_hi, bad, off_bins};
   std::copy(partial, partial + kWindowInts, window);
 }
 
@@ -114,9 +132,29 @@ void order_ties_by_scene_index(World& w) {
   }
 }
 
+// Bins for the counting sort: base nodes [i0, i0 + width) x [j0, j0 + rows).
+void set_bins(World& w, int i0, int j0, int width, int rows, int threads) {
+  w.bin_i0 = i0;
+  w.bin_j0 = j0;
+  w.bin_width = width;
+  w.bins = width * rows;
+  const std::size_t size = static_cast<std::size_t>(threads) * w.bins;
+  if (w.thread_counts.size() < size) w.thread_counts.resize(size);
+}
+
+// Whether every point was counted in the bins (none off them, none off the
+// grid), from the threads' partials: the same answer on every thread.
+bool counted_in_bins(const World& w, int threads) {
+  const int n = static_cast<int>(w.points.size());
+  for (int t = 0; t < threads; ++t) {
+    const int* p = &w.thread_window[static_cast<std::size_t>(t) * kWindowInts];
+    if (p[4] < n || p[5] > 0) return false;
+  }
+  return true;
+}
+
 // The window of nodes the points touch, from the threads' partials (min and
-// max: the same whatever the number of threads). The bins of the sort are
-// the window's base nodes, row-major as the grid, so a scene pays for the
+// max: the same whatever the number of threads), so a scene pays for the
 // nodes near its material, not for the whole mesh.
 void set_window(World& w, int threads) {
   Grid& g = w.grid;
@@ -136,11 +174,21 @@ void set_window(World& w, int threads) {
   g.i_end = i_hi + 3;
   g.j_begin = j_lo;
   g.j_end = j_hi + 3;
-  w.bins = (g.i_end - 2 - g.i_begin) * (g.j_end - 2 - g.j_begin);
-  w.thread_counts.resize(static_cast<std::size_t>(threads) * w.bins);
   w.order.resize(n);
   const int bands = (g.j_end - g.j_begin + kBandRows - 1) / kBandRows;
   w.band_start.resize(static_cast<std::size_t>(bands) + 1);
+}
+
+// Counts the points of [lo, hi) in bins fitted to the window: the step's
+// first count, or one where a point moved off the last step's bins.
+void count_in_window_bins(World& w, int t, int lo, int hi) {
+  int* counts = w.thread_counts.data() + static_cast<std::size_t>(t) * w.bins;
+  std::fill(counts, counts + w.bins, 0);
+  for (int p = lo; p < hi; ++p) {
+    const Stencil& st = w.stencils[p];
+    w.bin_key[p] = (st.base_j - w.bin_j0) * w.bin_width + (st.base_i - w.bin_i0);
+    ++counts[w.bin_key[p]];
+  }
 }
 
 // Exclusive prefix of the counts, bin by bin and within a bin thread by
@@ -149,9 +197,8 @@ void set_window(World& w, int threads) {
 // index, the same order whatever the number of threads. Each thread does the
 // prefix over its own run of bins, from the totals of the runs before it, and
 // notes where each band starts: band b starts at the first point whose base
-// node is in its rows.
+// node is in its rows, the window's base rows [b, b + 1) kBandRows.
 void prefix_own_bins(World& w, int t, int threads) {
-  const int width = w.grid.i_end - 2 - w.grid.i_begin;
   const int first = static_cast<int>(static_cast<long>(w.bins) * t / threads);
   const int end = static_cast<int>(static_cast<long>(w.bins) * (t + 1) / threads);
   int total = 0;
@@ -161,8 +208,12 @@ void prefix_own_bins(World& w, int t, int threads) {
 #pragma omp barrier
   int running = 0;
   for (int u = 0; u < t; ++u) running += w.thread_totals[u];
+  const int base_rows = w.grid.j_end - 2 - w.grid.j_begin;
   for (int k = first; k < end; ++k) {
-    if (k % width == 0 && (k / width) % kBandRows == 0) w.band_start[k / width / kBandRows] = running;
+    if (k % w.bin_width == 0) {
+      const int row = w.bin_j0 + k / w.bin_width - w.grid.j_begin;
+      if (row >= 0 && row < base_rows && row % kBandRows == 0) w.band_start[row / kBandRows] = running;
+    }
     for (int u = 0; u < threads; ++u) {
       int& c = w.thread_counts[static_cast<std::size_t>(u) * w.bins + k];
       const int here = c;
@@ -176,9 +227,8 @@ void prefix_own_bins(World& w, int t, int threads) {
 // last point; the threads' bands and the step's partial sums.
 void finish_bands(World& w, int threads) {
   const Grid& g = w.grid;
-  const int width = g.i_end - 2 - g.i_begin;
   const int bands = static_cast<int>(w.band_start.size()) - 1;
-  const int filled = (w.bins / width + kBandRows - 1) / kBandRows;
+  const int filled = (g.j_end - 2 - g.j_begin + kBandRows - 1) / kBandRows;
   for (int b = filled; b <= bands; ++b) w.band_start[b] = static_cast<int>(w.points.size());
   partition_bands(w, threads);
   w.band_sums.assign(static_cast<std::size_t>(bands) * kBandSums, 0.0);
@@ -196,37 +246,53 @@ bool locate_and_sort(World& w) {
   const int first_block = blocks * t / threads, end_block = blocks * (t + 1) / threads;
   const int lo = std::min(n, 8 * first_block), hi = std::min(n, 8 * end_block);
   int* window = &w.thread_window[static_cast<std::size_t>(t) * kWindowInts];
-  compute_stencils(w, first_block, end_block, window);
+  compute_stencils(w, first_block, end_block,
+                   w.thread_counts.data() + static_cast<std::size_t>(t) * w.bins, window);
 #pragma omp barrier
+  if (counted_in_bins(w, threads)) {
+    // The prefix's first part reads only the counts; its barrier puts the
+    // window before the band starts of its second part.
+    if (t == 0) set_window(w, threads);
+  } else {
 #pragma omp single
-  set_window(w, threads);
-  if (w.bad_point < n) return false;  // every thread reads the same value
-  const Grid& g = w.grid;
-  const int width = g.i_end - 2 - g.i_begin;
-  int* counts = &w.thread_counts[static_cast<std::size_t>(t) * w.bins];
-  std::fill(counts, counts + w.bins, 0);
-  for (int p = lo; p < hi; ++p) {
-    const Stencil& st = w.stencils[p];
-    w.bin_key[p] = (st.base_j - g.j_begin) * width + (st.base_i - g.i_begin);
-    ++counts[w.bin_key[p]];
-  }
+    {
+      set_window(w, threads);
+      const Grid& g = w.grid;
+      set_bins(w, g.i_begin, g.j_begin, g.i_end - 2 - g.i_begin, g.j_end - 2 - g.j_begin, threads);
+    }
+    if (w.bad_point < n) return false;  // every thread reads the same value
+    count_in_window_bins(w, t, lo, hi);
 #pragma omp barrier
+  }
   prefix_own_bins(w, t, threads);
 #pragma omp barrier
 #pragma omp single nowait
   finish_bands(w, threads);
+  int* counts = w.thread_counts.data() + static_cast<std::size_t>(t) * w.bins;
   for (int p = lo; p < hi; ++p) w.order[counts[w.bin_key[p]]++] = p;
 #pragma omp barrier
   order_ties_by_scene_index(w);  // the thread's own bands, which only it reads next
   return true;
 }
 
+// Outside the team: sizes the per-point scratch and sets the bins from the
+// last step's window (none before the first step).
 void prepare_locate(World& w) {
   const std::size_t n = w.points.size();
+  const int threads = omp_get_max_threads();
   w.stencils.resize(n);
   w.bin_key.resize(n);
-  w.thread_window.resize(static_cast<std::size_t>(omp_get_max_threads()) * kWindowInts);
-  w.thread_totals.resize(static_cast<std::size_t>(omp_get_max_threads()));
+  w.thread_window.resize(static_cast<std::size_t>(threads) * kWindowInts);
+  w.thread_totals.resize(static_cast<std::size_t>(threads));
+  const Grid& g = w.grid;
+  if (g.i_end <= g.i_begin) {
+    set_bins(w, 0, 0, 0, 0, threads);
+    return;
+  }
+  const int i0 = std::max(0, g.i_begin - kBinMargin), j0 = std::max(0, g.j_begin - kBinMargin);
+  const int i1 = std::min(g.nx - 2, g.i_end - 2 + kBinMargin);
+  const int j1 = std::min(g.ny - 2, g.j_end - 2 + kBinMargin);
+  set_bins(w, i0, j0, i1 - i0, j1 - j0, threads);
 }
 
 void locate_points(World& w) {

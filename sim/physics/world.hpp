@@ -37,13 +37,15 @@ struct World {
 
   // Scratch, rebuilt every step.
   std::vector<Stencil> stencils;  // per point
-  std::vector<int> bin_key;       // per point: grid index of its stencil's base node
+  std::vector<int> bin_key;       // per point: the bin of its stencil's base node
   std::vector<int> order;         // points sorted by their stencil's base node
   std::vector<int> band_start;    // order[band_start[b] .. band_start[b+1]) is band b
   std::vector<int> thread_counts; // counting sort: per thread, points per bin (base node)
-  std::vector<int> thread_window; // per thread: touched window and first point off the grid
+  std::vector<int> thread_window; // per thread: touched window, first point off the grid, points off the bins
   std::vector<int> thread_totals; // per thread: points in its run of bins
-  int bins = 0;                   // base nodes in the window
+  // The counting sort's bins: base nodes [bin_i0, bin_i0 + bin_width) x
+  // [bin_j0, bin_j0 + bins / bin_width), row-major (locate.cpp).
+  int bins = 0, bin_i0 = 0, bin_j0 = 0, bin_width = 0;
   int bad_point = 0;              // scene index of the first point off the grid (the number of points if none)
   std::vector<int> thread_bands;  // thread t owns bands [thread_bands[t], thread_bands[t+1])
   std::vector<double> band_sums;  // per band partial sums of the step's reductions

@@ -210,3 +210,47 @@ TEST(PointOrder, TheWatchdogNamesTheSamePointInEitherOrder) {
 }
 
 }  // namespace
+
+namespace {
+
+// locate_points from bins fitted to the points' own window, as on a first
+// step: the grid's window forgotten.
+sim::World located_afresh(sim::World w) {
+  w.grid.i_begin = w.grid.i_end = w.grid.j_begin = w.grid.j_end = 0;
+  sim::locate_points(w);
+  return w;
+}
+
+void expect_same_sort(const sim::World& from_last_step, const sim::World& afresh) {
+  EXPECT_EQ(from_last_step.order, afresh.order);
+  EXPECT_EQ(from_last_step.band_start, afresh.band_start);
+  EXPECT_EQ(from_last_step.thread_bands, afresh.thread_bands);
+  EXPECT_EQ(from_last_step.grid.i_begin, afresh.grid.i_begin);
+  EXPECT_EQ(from_last_step.grid.j_end, afresh.grid.j_end);
+}
+
+}  // namespace
+
+// The counting sort counts the points in the last step's bins (locate.cpp);
+// it must sort them as bins fitted to this step's window do, and count again
+// where a point has moved off the last step's bins.
+TEST(PointOrder, BinsFromTheLastStepSortAsFreshBins) {
+  Slope slope = flowing_slope(sim::TransferScheme::Flip, false);
+  sim::World& w = slope.world;
+  sim::StepReport r;
+  for (int k = 0; k < 40; ++k) sim::step(w, slope.input, r);
+  sim::sort_points_by_cell(w);
+  const sim::World before = w;
+  sim::locate_points(w);
+  expect_same_sort(w, located_afresh(before));
+  // One point three cells up the slope, off the last step's bins' margin.
+  sim::World jumped = before;
+  int p = 0;
+  for (int q = 1; q < static_cast<int>(jumped.points.size()); ++q)
+    if (jumped.points.y[q] > jumped.points.y[p]) p = q;
+  jumped.points.y[p] += 3 * jumped.grid.h;
+  const sim::World fresh = located_afresh(jumped);
+  sim::locate_points(jumped);
+  ASSERT_GT(fresh.grid.j_end, before.grid.j_end) << "the moved point did not leave the window";
+  expect_same_sort(jumped, fresh);
+}
