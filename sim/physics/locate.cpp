@@ -22,9 +22,10 @@ namespace {
 constexpr int kWindowInts = 6;
 
 // The bins a step counts its points in while it computes their stencils are
-// the last step's base nodes and this margin around them: a point moves less
-// than a cell in a stable step (Courant number at most 1). A point off them
-// sends the step back to count again in bins fitted to its window.
+// the last step's base nodes and this margin around them: a step moves a point
+// by at most about half a cell (the scene reader and the time loop keep the
+// Courant number at or below 0.5). A point off them sends the step back to
+// count again in bins fitted to its window.
 constexpr int kBinMargin = 1;
 
 }  // namespace
@@ -47,6 +48,18 @@ void throw_point_left_grid(const World& w) {
 
 namespace {
 
+// The bin of base node (i, j): row-major from (bin_i0, bin_j0); -1 off the bins.
+int bin_of(const World& w, int i, int j) {
+  const int bi = i - w.bin_i0, bj = j - w.bin_j0;
+  if (bi < 0 || bi >= w.bin_width || bj < 0 || bj * w.bin_width >= w.bins) return -1;
+  return bj * w.bin_width + bi;
+}
+
+// Thread t's counts, one per bin.
+int* counts_of(World& w, int t) {
+  return w.thread_counts.data() + static_cast<std::size_t>(t) * w.bins;
+}
+
 // Stencils of the points of Lane8 blocks [first_block, end_block), eight
 // points at a time (gimp.hpp; the last block repeats its last point where the
 // points run out), each point counted in its bin (`counts`, the thread's,
@@ -56,7 +69,6 @@ void compute_stencils(World& w, int first_block, int end_block, int* counts, int
   const Particles& pts = w.points;
   const Grid& g = w.grid;
   const int n = static_cast<int>(pts.size());
-  const int bin_rows = w.bin_width > 0 ? w.bins / w.bin_width : 0;
   std::fill(counts, counts + w.bins, 0);
   int i_lo = g.nx, i_hi = -1, j_lo = g.ny, j_hi = -1, bad = n, off_bins = 0;
   for (int blk = first_block; blk < end_block; ++blk) {
@@ -99,13 +111,13 @@ void compute_stencils(World& w, int first_block, int end_block, int* counts, int
       i_hi = std::max(i_hi, st.base_i);
       j_lo = std::min(j_lo, st.base_j);
       j_hi = std::max(j_hi, st.base_j);
-      const int bi = st.base_i - w.bin_i0, bj = st.base_j - w.bin_j0;
-      if (bi < 0 || bi >= w.bin_width || bj < 0 || bj >= bin_rows) {
+      const int bin = bin_of(w, st.base_i, st.base_j);
+      if (bin < 0) {
         ++off_bins;
         continue;
       }
-      w.bin_key[first + l] = bj * w.bin_width + bi;
-      ++counts[w.bin_key[first + l]];
+      w.bin_key[first + l] = bin;
+      ++counts[bin];
     }
   }
   const int partial[kWindowInts] = {i_lo, i_hi, j_lo, j_hi, bad, off_bins};
@@ -182,11 +194,11 @@ void set_window(World& w, int threads) {
 // Counts the points of [lo, hi) in bins fitted to the window: the step's
 // first count, or one where a point moved off the last step's bins.
 void count_in_window_bins(World& w, int t, int lo, int hi) {
-  int* counts = w.thread_counts.data() + static_cast<std::size_t>(t) * w.bins;
+  int* counts = counts_of(w, t);
   std::fill(counts, counts + w.bins, 0);
   for (int p = lo; p < hi; ++p) {
     const Stencil& st = w.stencils[p];
-    w.bin_key[p] = (st.base_j - w.bin_j0) * w.bin_width + (st.base_i - w.bin_i0);
+    w.bin_key[p] = bin_of(w, st.base_i, st.base_j);
     ++counts[w.bin_key[p]];
   }
 }
@@ -246,8 +258,7 @@ bool locate_and_sort(World& w) {
   const int first_block = blocks * t / threads, end_block = blocks * (t + 1) / threads;
   const int lo = std::min(n, 8 * first_block), hi = std::min(n, 8 * end_block);
   int* window = &w.thread_window[static_cast<std::size_t>(t) * kWindowInts];
-  compute_stencils(w, first_block, end_block,
-                   w.thread_counts.data() + static_cast<std::size_t>(t) * w.bins, window);
+  compute_stencils(w, first_block, end_block, counts_of(w, t), window);
 #pragma omp barrier
   if (counted_in_bins(w, threads)) {
     // The prefix's first part reads only the counts; its barrier puts the
@@ -268,7 +279,7 @@ bool locate_and_sort(World& w) {
 #pragma omp barrier
 #pragma omp single nowait
   finish_bands(w, threads);
-  int* counts = w.thread_counts.data() + static_cast<std::size_t>(t) * w.bins;
+  int* counts = counts_of(w, t);
   for (int p = lo; p < hi; ++p) w.order[counts[w.bin_key[p]]++] = p;
 #pragma omp barrier
   order_ties_by_scene_index(w);  // the thread's own bands, which only it reads next
