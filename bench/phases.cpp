@@ -15,8 +15,12 @@
 // apart: the case the sort is for, where the column's own seeding order is
 // already close to the step's. --threads N steps with a team of N threads,
 // as sim::step does, with a barrier after every phase (the time a phase's
-// threads wait for each other is counted in that phase).
+// threads wait for each other is counted in that phase). --scene NAME steps
+// scenarios/NAME.json instead of the column (REFINE must then be 1), from
+// its seeded state under its full gravity: a slope's window, unlike the
+// column's, is mostly air above its face.
 //   build/bench/phases [REFINE] [STEPS] [--own-strength] [--scene-order] [--mixed] [--threads N]
+//                      [--scene NAME]
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
@@ -53,10 +57,14 @@ struct Hash {
 int main(int argc, char** argv) {
   bool own = false, sort = true, mixed = false;
   int threads = 1;
+  std::string scene;
   for (; argc > 1; --argc) {
     const std::string last = argv[argc - 1];
     if (argc > 2 && std::string(argv[argc - 2]) == "--threads") {
       threads = std::atoi(last.c_str());
+      --argc;
+    } else if (argc > 2 && std::string(argv[argc - 2]) == "--scene") {
+      scene = last;
       --argc;
     } else if (last == "--own-strength") own = true;
     else if (last == "--scene-order") sort = false;
@@ -64,12 +72,12 @@ int main(int argc, char** argv) {
     else break;
   }
   const int refine = argc > 1 ? std::atoi(argv[1]) : 1, steps = argc > 2 ? std::atoi(argv[2]) : 200;
-  if (refine < 1 || steps < 1 || argc > 3 || threads < 1) {
+  if (refine < 1 || steps < 1 || argc > 3 || threads < 1 || (!scene.empty() && refine != 1)) {
     std::fprintf(stderr, "usage: phases [REFINE >= 1] [STEPS >= 1] [--own-strength] "
-                         "[--scene-order] [--mixed] [--threads N >= 1]\n");
+                         "[--scene-order] [--mixed] [--threads N >= 1] [--scene NAME, REFINE 1]\n");
     return 2;
   }
-  const sim::Scenario s = bench::granular_column(refine);
+  const sim::Scenario s = scene.empty() ? bench::granular_column(refine) : bench::load_scene(scene);
   sim::World w = sim::make_world(s);
   if (own) {
     std::vector<double> angles(w.points.size());
