@@ -16,6 +16,7 @@
 #pragma once
 
 #include <omp.h>
+#include <sched.h>
 
 #include <algorithm>
 
@@ -111,18 +112,47 @@ void for_own_bands(const World& w, Visit visit) {
   for (int b = r.begin; b < r.end; ++b) visit(b);
 }
 
+// The step's two scatters to the grid. A scatter marks a finished band with
+// 3 x the step's serial number + this, an epoch no other scatter takes.
+enum class Scatter { Mass = 1, Forces = 2 };
+
+// A thread waiting for a band pauses this many times, then yields its core
+// at every try: a partner that another process took off its core would
+// otherwise wait for a time slice while the waiter spins.
+constexpr int kSpinsBeforeYield = 4000;
+
 // As for_own_bands, for visits that add to grid nodes: even bands first,
-// then (after a barrier) odd bands. Two bands of one parity are a band apart
-// and a stencil spans three node rows, so no two threads add to one node at
-// once, and each node receives its sums in the same order whatever the
-// number of threads. Ends with a barrier.
+// then odd bands. Two bands of one parity are a band apart and a stencil
+// spans three node rows, so no two threads add to one node at once, and each
+// node receives its sums in the same order whatever the number of threads:
+// an odd band starts once its two even neighbours are done. A thread's odd
+// bands but its lowest need only its own even bands; the lowest waits for
+// the thread below's last even band and goes last. Without a barrier between
+// the parities, a thread slower on its even bands and one slower on its odd
+// bands even out (bench/README.md). Ends with a barrier.
 template <class Visit>
-void scatter_own_bands(const World& w, Visit visit) {
+void scatter_own_bands(World& w, Scatter which, Visit visit) {
   const BandRange r = own_bands(w);
-  for (int parity = 0; parity < 2; ++parity) {
-    for (int b = r.begin + ((r.begin & 1) != parity); b < r.end; b += 2) visit(b);
-#pragma omp barrier
+  const int bands = static_cast<int>(w.band_start.size()) - 1;
+  const long epoch = 3 * w.step_serial + static_cast<long>(which);
+  for (int b = r.begin + (r.begin & 1); b < r.end; b += 2) {
+    visit(b);
+    w.band_done[b].epoch.store(epoch, std::memory_order_release);
   }
+  const auto finished = [&](int b) {
+    return b < 0 || b >= bands || w.band_done[b].epoch.load(std::memory_order_acquire) == epoch;
+  };
+  const auto when_ready = [&](int b) {
+    for (int spins = 0; !finished(b - 1) || !finished(b + 1); ++spins) {
+      if (spins < kSpinsBeforeYield) __builtin_ia32_pause();
+      else sched_yield();
+    }
+    visit(b);
+  };
+  const int lowest = r.begin + !(r.begin & 1);
+  for (int b = lowest + 2; b < r.end; b += 2) when_ready(b);
+  if (lowest < r.end) when_ready(lowest);
+#pragma omp barrier
 }
 
 }  // namespace sim

@@ -189,6 +189,7 @@ void set_window(World& w, int threads) {
   w.order.resize(n);
   const int bands = (g.j_end - g.j_begin + kBandRows - 1) / kBandRows;
   w.band_start.resize(static_cast<std::size_t>(bands) + 1);
+  w.band_done.resize(static_cast<std::size_t>(bands));
 }
 
 // Counts the points of [lo, hi) in bins fitted to the window: the step's
@@ -291,6 +292,7 @@ bool locate_and_sort(World& w) {
 void prepare_locate(World& w) {
   const std::size_t n = w.points.size();
   const int threads = omp_get_max_threads();
+  ++w.step_serial;
   w.stencils.resize(n);
   w.bin_key.resize(n);
   w.thread_window.resize(static_cast<std::size_t>(threads) * kWindowInts);

@@ -56,7 +56,7 @@ void reset_grid(World& w) {
 void points_to_grid(World& w) {
   const Particles& pts = w.points;
   Grid& g = w.grid;
-  scatter_own_bands(w, [&](int band) {
+  scatter_own_bands(w, Scatter::Mass, [&](int band) {
     NodeSums<3> sums{{g.mass.data(), g.px.data(), g.py.data()}, g.stride};
     for (int s = w.band_start[band]; s < w.band_start[band + 1]; ++s) {
       const int p = w.order[s];

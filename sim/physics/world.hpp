@@ -3,6 +3,7 @@
 // inside the step once the first step has sized it).
 #pragma once
 
+#include <atomic>
 #include <stdexcept>
 #include <vector>
 
@@ -21,6 +22,19 @@ namespace sim {
 class SimulationError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
+};
+
+// The last scatter a band finished (sim/physics/bands.hpp), as that
+// scatter's epoch. A copied or assigned World starts with none: its step
+// count may be behind the marks the band had.
+struct BandDone {
+  std::atomic<long> epoch{0};
+  BandDone() = default;
+  BandDone(const BandDone&) {}
+  BandDone& operator=(const BandDone&) {
+    epoch.store(0, std::memory_order_relaxed);
+    return *this;
+  }
 };
 
 struct World {
@@ -48,6 +62,8 @@ struct World {
   int bins = 0, bin_i0 = 0, bin_j0 = 0, bin_width = 0;
   int bad_point = 0;              // scene index of the first point off the grid (the number of points if none)
   std::vector<int> thread_bands;  // thread t owns bands [thread_bands[t], thread_bands[t+1])
+  std::vector<BandDone> band_done;  // per band: the last scatter that finished it
+  long step_serial = 0;           // steps located so far (prepare_locate)
   std::vector<double> band_sums;  // per band partial sums of the step's reductions
   Team team;                      // the step's threads (sim/physics/team.hpp)
   std::vector<double> sort_scratch;  // one per-point array, for sort_points_by_cell

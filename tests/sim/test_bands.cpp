@@ -1,0 +1,104 @@
+// The scatters' order (sim/physics/bands.hpp). There is no barrier between
+// the even and the odd bands: an odd band must still start only after both
+// of its even neighbours have finished, whoever owns them and however long
+// each takes, or two threads would add to one node at once and a node's sum
+// would change its order.
+#include <gtest/gtest.h>
+#include <omp.h>
+
+#include <atomic>
+#include <chrono>
+#include <vector>
+
+#include "sim/physics/bands.hpp"
+
+namespace {
+
+// One point per band; thread t owns bands [starts[t], starts[t + 1]).
+sim::World banded_world(const std::vector<int>& starts) {
+  sim::World w;
+  const int bands = starts.back();
+  for (int b = 0; b <= bands; ++b) w.band_start.push_back(b);
+  w.band_done.resize(bands);
+  w.thread_bands = starts;
+  w.step_serial = 1;
+  return w;
+}
+
+struct Visit {
+  long start = -1, end = -1;  // ticks of one clock shared by the threads
+  int thread = -1;
+};
+
+void spin_for(std::chrono::microseconds d) {
+  const auto until = std::chrono::steady_clock::now() + d;
+  while (std::chrono::steady_clock::now() < until) {
+  }
+}
+
+// One scatter on starts.size() - 1 threads. The last even band below each
+// thread boundary is slow, so the odd band just above it is ready last.
+std::vector<Visit> scatter_log(sim::World& w, sim::Scatter which, int& team) {
+  const int threads = static_cast<int>(w.thread_bands.size()) - 1;
+  std::vector<Visit> log(w.band_done.size());
+  std::atomic<long> clock{0};
+#pragma omp parallel num_threads(threads)
+  {
+#pragma omp single
+    team = omp_get_num_threads();
+    sim::scatter_own_bands(w, which, [&](int b) {
+      log[b].start = clock++;
+      log[b].thread = omp_get_thread_num();
+      bool slow = false;
+      for (std::size_t t = 1; t + 1 < w.thread_bands.size(); ++t)
+        slow = slow || b + 1 == w.thread_bands[t] || b + 2 == w.thread_bands[t];
+      spin_for(std::chrono::microseconds(slow && b % 2 == 0 ? 3000 : 50 * (b % 3)));
+      log[b].end = clock++;
+    });
+  }
+  return log;
+}
+
+void expect_ordered(const std::vector<int>& starts) {
+  sim::World w = banded_world(starts);
+  // Two scatters of one step: the second must not take the first's marks
+  // for its own.
+  for (const sim::Scatter which : {sim::Scatter::Mass, sim::Scatter::Forces}) {
+    int team = 0;
+    const std::vector<Visit> log = scatter_log(w, which, team);
+    const int bands = static_cast<int>(log.size());
+    for (int b = 0; b < bands; ++b) {
+      ASSERT_GE(log[b].start, 0) << "band " << b << " was not visited";
+      if (team == static_cast<int>(starts.size()) - 1) {
+        EXPECT_GE(b, starts[log[b].thread]) << "band " << b;
+        EXPECT_LT(b, starts[log[b].thread + 1]) << "band " << b;
+      }
+      if (b % 2 == 0) continue;
+      if (b > 0) EXPECT_GT(log[b].start, log[b - 1].end) << "odd band " << b << " before " << b - 1;
+      if (b + 1 < bands)
+        EXPECT_GT(log[b].start, log[b + 1].end) << "odd band " << b << " before " << b + 1;
+    }
+  }
+}
+
+TEST(Bands, OddBandsStartAfterBothEvenNeighboursTwoThreads) {
+  expect_ordered({0, 5, 11});  // the upper thread begins on an odd band
+  expect_ordered({0, 6, 11});  // and on an even one
+}
+
+TEST(Bands, OddBandsStartAfterBothEvenNeighboursFourThreads) {
+  expect_ordered({0, 3, 7, 8, 14});  // one thread owns a single odd band
+}
+
+TEST(Bands, OneThreadVisitsEveryBandEvenThenOdd) {
+  sim::World w = banded_world({0, 7});
+  int team = 0;
+  const std::vector<Visit> log = scatter_log(w, sim::Scatter::Mass, team);
+  for (int b = 0; b < 7; ++b) {
+    ASSERT_GE(log[b].start, 0);
+    for (int e = 0; e < 7; e += 2)
+      if (b % 2 == 1) EXPECT_GT(log[b].start, log[e].end);
+  }
+}
+
+}  // namespace
