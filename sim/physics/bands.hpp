@@ -121,6 +121,14 @@ enum class Scatter { Mass = 1, Forces = 2 };
 // otherwise wait for a time slice while the waiter spins.
 constexpr int kSpinsBeforeYield = 4000;
 
+// One turn of a spin: the processor's hint that this is a wait loop (x86
+// PAUSE), or nothing where the build has no such hint.
+inline void spin_pause() {
+#if defined(__x86_64__) || defined(__i386__)
+  __builtin_ia32_pause();
+#endif
+}
+
 // As for_own_bands, for visits that add to grid nodes: even bands first,
 // then odd bands. Two bands of one parity are a band apart and a stencil
 // spans three node rows, so no two threads add to one node at once, and each
@@ -144,7 +152,7 @@ void scatter_own_bands(World& w, Scatter which, Visit visit) {
   };
   const auto when_ready = [&](int b) {
     for (int spins = 0; !finished(b - 1) || !finished(b + 1); ++spins) {
-      if (spins < kSpinsBeforeYield) __builtin_ia32_pause();
+      if (spins < kSpinsBeforeYield) spin_pause();
       else sched_yield();
     }
     visit(b);
