@@ -24,7 +24,7 @@ double row_offset(const Grid& g, const Stencil& st, int b, double y) {
 void points_to_grid_apic(World& w) {
   const Particles& pts = w.points;
   Grid& g = w.grid;
-  scatter_own_bands(w, Scatter::Mass, [&](int band) {
+  scatter_own_bands(w, BandMark::Mass, [&](int band) {
     double kinetic = 0;
     for (int s = w.band_start[band]; s < w.band_start[band + 1]; ++s) {
       const int p = w.order[s];
@@ -49,7 +49,7 @@ void grid_to_points_apic(World& w, const StepInput& in) {
   const Grid& g = w.grid;
   Particles& pts = w.points;
   const double keep = 1.0 / (1.0 + in.damping);
-  for_own_bands(w, [&](int band) {
+  gather_own_bands(w, [&](int band) {
     double gravity_work = 0, kinetic = 0, moving = 0, damped = 0, signal = 0;
     for (int s = w.band_start[band]; s < w.band_start[band + 1]; ++s) {
       const int p = w.order[s];

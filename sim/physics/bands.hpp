@@ -103,20 +103,16 @@ inline void own_rows(const World& w, int& first, int& last) {
   first = std::min(g.j_begin + r.begin * kBandRows, last);
 }
 
-// Runs visit(band) for each of the calling thread's bands, in order; the
-// band's points are order[band_start[band] .. band_start[band + 1]). For
-// phases that write only their own points: no barrier.
-template <class Visit>
-void for_own_bands(const World& w, Visit visit) {
-  const BandRange r = own_bands(w);
-  for (int b = r.begin; b < r.end; ++b) visit(b);
+// What a band's mark in band_done says it has finished: one of the step's
+// two scatters, or the nodal update of its node rows. The mark is
+// 4 x the step's serial number + this, an epoch nothing else takes.
+enum class BandMark { Mass = 1, Forces = 2, NodalUpdate = 3 };
+
+inline long mark_epoch(const World& w, BandMark m) {
+  return 4 * w.step_serial + static_cast<long>(m);
 }
 
-// The step's two scatters to the grid. A scatter marks a finished band with
-// 3 x the step's serial number + this, an epoch no other scatter takes.
-enum class Scatter { Mass = 1, Forces = 2 };
-
-// A thread waiting for a band pauses this many times, then yields its core
+// A thread waiting for a mark pauses this many times, then yields its core
 // at every try: a partner that another process took off its core would
 // otherwise wait for a time slice while the waiter spins.
 constexpr int kSpinsBeforeYield = 4000;
@@ -129,32 +125,65 @@ inline void spin_pause() {
 #endif
 }
 
-// As for_own_bands, for visits that add to grid nodes: even bands first,
-// then odd bands. Two bands of one parity are a band apart and a stencil
-// spans three node rows, so no two threads add to one node at once, and each
-// node receives its sums in the same order whatever the number of threads:
-// an odd band starts once its two even neighbours are done. A thread's odd
-// bands but its lowest need only its own even bands; the lowest waits for
-// the thread below's last even band and goes last. Without a barrier between
-// the parities, a thread slower on its even bands and one slower on its odd
+// Whether band b has the mark `epoch`; a band past either end has it.
+inline bool has_mark(const World& w, int b, long epoch) {
+  const int bands = static_cast<int>(w.band_done.size());
+  return b < 0 || b >= bands || w.band_done[b].epoch.load(std::memory_order_acquire) == epoch;
+}
+
+inline void wait_for_mark(const World& w, int b, long epoch) {
+  for (int spins = 0; !has_mark(w, b, epoch); ++spins) {
+    if (spins < kSpinsBeforeYield) spin_pause();
+    else sched_yield();
+  }
+}
+
+inline void mark_band(World& w, int b, long epoch) {
+  w.band_done[b].epoch.store(epoch, std::memory_order_release);
+}
+
+// Marks each of the calling thread's bands.
+inline void mark_own_bands(World& w, BandMark m) {
+  const BandRange r = own_bands(w);
+  for (int b = r.begin; b < r.end; ++b) mark_band(w, b, mark_epoch(w, m));
+}
+
+// Runs visit(band) for each of the calling thread's bands; the band's points
+// are order[band_start[band] .. band_start[band + 1]). For the phase that
+// reads the nodes after the nodal update and writes only its own points: a
+// band's stencils reach the two lowest node rows of the band above, so the
+// thread's highest band goes last, once the thread above has marked its rows
+// updated (update_nodal_momentum); the others need only the thread's own
+// rows. No barrier.
+template <class Visit>
+void gather_own_bands(World& w, Visit visit) {
+  const BandRange r = own_bands(w);
+  if (r.begin == r.end) return;
+  for (int b = r.begin; b + 1 < r.end; ++b) visit(b);
+  wait_for_mark(w, r.end, mark_epoch(w, BandMark::NodalUpdate));
+  visit(r.end - 1);
+}
+
+// For visits that add to grid nodes: even bands first, then odd bands. Two
+// bands of one parity are a band apart and a stencil spans three node rows,
+// so no two threads add to one node at once, and each node receives its
+// sums in the same order whatever the number of threads: an odd band starts
+// once its two even neighbours are marked done. A thread's odd bands but its
+// lowest need only its own even bands; the lowest waits for the thread
+// below's last even band and goes last. Without a barrier between the
+// parities, a thread slower on its even bands and one slower on its odd
 // bands even out (bench/README.md). Ends with a barrier.
 template <class Visit>
-void scatter_own_bands(World& w, Scatter which, Visit visit) {
+void scatter_own_bands(World& w, BandMark which, Visit visit) {
   const BandRange r = own_bands(w);
-  const int bands = static_cast<int>(w.band_start.size()) - 1;
-  const long epoch = 3 * w.step_serial + static_cast<long>(which);
+  const long epoch = mark_epoch(w, which);
   for (int b = r.begin + (r.begin & 1); b < r.end; b += 2) {
     visit(b);
-    w.band_done[b].epoch.store(epoch, std::memory_order_release);
+    mark_band(w, b, epoch);
   }
-  const auto finished = [&](int b) {
-    return b < 0 || b >= bands || w.band_done[b].epoch.load(std::memory_order_acquire) == epoch;
-  };
   const auto when_ready = [&](int b) {
-    for (int spins = 0; !finished(b - 1) || !finished(b + 1); ++spins) {
-      if (spins < kSpinsBeforeYield) spin_pause();
-      else sched_yield();
-    }
+    wait_for_mark(w, b - 1, epoch);
+    wait_for_mark(w, b + 1, epoch);
     visit(b);
   };
   const int lowest = r.begin + !(r.begin & 1);

@@ -178,7 +178,7 @@ double update_stress(World& w, double dt) {
 // in the band's order, and its work summed in that order.
 void update_stress_and_forces(World& w, const StepInput& in) {
   const MohrCoulomb* own = own_strength(w);
-  scatter_own_bands(w, Scatter::Forces, [&](int band) {
+  scatter_own_bands(w, BandMark::Forces, [&](int band) {
     MaterialLanesCache cache;
     NodeSums<2> forces{{w.grid.fx.data(), w.grid.fy.data()}, w.grid.stride};
     double total = 0;
@@ -209,7 +209,7 @@ void grid_to_points(World& w, const StepInput& in) {
   const double* const mass = w.points.mass.data();
   const std::uint8_t* const material = w.points.material.data();
   const int kinds = static_cast<int>(w.materials.size());
-  for_own_bands(w, [&](int band) {
+  gather_own_bands(w, [&](int band) {
     double gravity_work = 0, kinetic = 0, moving = 0, damped = 0, walled = 0;
     // The band's signal speed max_p (c_p + |v_p|) from the largest |v_p|^2 of
     // each material: sqrt and + round correctly, so they keep order, and

@@ -15,7 +15,9 @@ namespace sim {
 
 // The whole step is one parallel region: a thread keeps its bands of points
 // and rows of nodes from phase to phase (sim/physics/bands.hpp), and the phases are
-// separated by barriers, not by starting new teams of threads. The transfers
+// separated by barriers, not by starting new teams of threads; where a phase
+// needs only the bands beside its own, by marks the bands leave instead
+// (sim/physics/bands.hpp). The transfers
 // are the paper's (FLIP-like increments) or APIC's (sim/physics/apic.hpp), chosen
 // once per step. The team has no more threads than there are free cores
 // (sim/physics/team.hpp).
@@ -31,8 +33,7 @@ void step(World& w, const StepInput& in, StepReport& report) {
       enforce_walls_on_momentum(w);
 #pragma omp barrier
       update_stress_and_forces(w, in);
-      update_nodal_momentum(w, in.dt);
-#pragma omp barrier
+      update_nodal_momentum(w, in.dt);  // marks its bands: G2P waits for those it reads
       if (apic) grid_to_points_apic(w, in); else grid_to_points(w, in);
     }
   }
@@ -56,7 +57,7 @@ void reset_grid(World& w) {
 void points_to_grid(World& w) {
   const Particles& pts = w.points;
   Grid& g = w.grid;
-  scatter_own_bands(w, Scatter::Mass, [&](int band) {
+  scatter_own_bands(w, BandMark::Mass, [&](int band) {
     NodeSums<3> sums{{g.mass.data(), g.px.data(), g.py.data()}, g.stride};
     for (int s = w.band_start[band]; s < w.band_start[band + 1]; ++s) {
       const int p = w.order[s];
@@ -135,6 +136,7 @@ void update_nodal_momentum(World& w, double dt) {
   }
   if (!g.friction_walls.empty()) friction_walls_on_update(g, first, last, dt);
   if (w.transfer == TransferScheme::Apic) grid_kinetic_by_row(g, first, last, kRowGridKineticUpdated);
+  mark_own_bands(w, BandMark::NodalUpdate);
 }
 
 // The step's sums, band by band (row by row for the walls) in a fixed order.

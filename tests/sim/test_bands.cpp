@@ -38,7 +38,7 @@ void spin_for(std::chrono::microseconds d) {
 
 // One scatter on starts.size() - 1 threads. The last even band below each
 // thread boundary is slow, so the odd band just above it is ready last.
-std::vector<Visit> scatter_log(sim::World& w, sim::Scatter which, int& team) {
+std::vector<Visit> scatter_log(sim::World& w, sim::BandMark which, int& team) {
   const int threads = static_cast<int>(w.thread_bands.size()) - 1;
   std::vector<Visit> log(w.band_done.size());
   std::atomic<long> clock{0};
@@ -63,7 +63,7 @@ void expect_ordered(const std::vector<int>& starts) {
   sim::World w = banded_world(starts);
   // Two scatters of one step: the second must not take the first's marks
   // for its own.
-  for (const sim::Scatter which : {sim::Scatter::Mass, sim::Scatter::Forces}) {
+  for (const sim::BandMark which : {sim::BandMark::Mass, sim::BandMark::Forces}) {
     int team = 0;
     const std::vector<Visit> log = scatter_log(w, which, team);
     const int bands = static_cast<int>(log.size());
@@ -93,7 +93,7 @@ TEST(Bands, OddBandsStartAfterBothEvenNeighboursFourThreads) {
 TEST(Bands, OneThreadVisitsEveryBandEvenThenOdd) {
   sim::World w = banded_world({0, 7});
   int team = 0;
-  const std::vector<Visit> log = scatter_log(w, sim::Scatter::Mass, team);
+  const std::vector<Visit> log = scatter_log(w, sim::BandMark::Mass, team);
   for (int b = 0; b < 7; ++b) {
     ASSERT_GE(log[b].start, 0);
     for (int e = 0; e < 7; e += 2)
@@ -102,3 +102,30 @@ TEST(Bands, OneThreadVisitsEveryBandEvenThenOdd) {
 }
 
 }  // namespace
+
+// After the nodal update no barrier either: a thread's highest band reads the
+// two lowest node rows of the band above, so it goes once the thread above
+// has marked its rows updated; the thread's other bands need only its own.
+TEST(Bands, HighestBandWaitsForTheRowsAboveToBeUpdated) {
+  sim::World w = banded_world({0, 4, 9});
+  std::vector<Visit> log(9);
+  long updated[2] = {-1, -1};  // when each thread marked its rows
+  std::atomic<long> clock{0};
+  int team = 0;
+#pragma omp parallel num_threads(2)
+  {
+#pragma omp single
+    team = omp_get_num_threads();
+    const int t = omp_get_thread_num();
+    if (t == 1) spin_for(std::chrono::microseconds(3000));  // a late nodal update
+    updated[t] = clock++;
+    sim::mark_own_bands(w, sim::BandMark::NodalUpdate);
+    sim::gather_own_bands(w, [&](int b) {
+      log[b].start = clock++;
+      log[b].thread = t;
+    });
+  }
+  if (team != 2) GTEST_SKIP() << "no team of 2 threads";
+  for (int b = 0; b < 9; ++b) ASSERT_GE(log[b].start, 0) << "band " << b << " was not visited";
+  EXPECT_GT(log[3].start, updated[1]) << "band 3 read rows the thread above had not updated";
+}
