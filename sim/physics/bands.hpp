@@ -145,7 +145,8 @@ inline void mark_band(World& w, int b, long epoch) {
 // Marks each of the calling thread's bands.
 inline void mark_own_bands(World& w, BandMark m) {
   const BandRange r = own_bands(w);
-  for (int b = r.begin; b < r.end; ++b) mark_band(w, b, mark_epoch(w, m));
+  const long epoch = mark_epoch(w, m);
+  for (int b = r.begin; b < r.end; ++b) mark_band(w, b, epoch);
 }
 
 // Runs visit(band) for each of the calling thread's bands; the band's points
@@ -168,11 +169,11 @@ void gather_own_bands(World& w, Visit visit) {
 // bands of one parity are a band apart and a stencil spans three node rows,
 // so no two threads add to one node at once, and each node receives its
 // sums in the same order whatever the number of threads: an odd band starts
-// once its two even neighbours are marked done. A thread's odd bands but its
-// lowest need only its own even bands; the lowest waits for the thread
-// below's last even band and goes last. Without a barrier between the
-// parities, a thread slower on its even bands and one slower on its odd
-// bands even out (bench/README.md). Ends with a barrier.
+// once its two even neighbours are marked done. A thread's odd bands need
+// only its own even bands, but where its bands begin on an odd one: that one
+// waits for the thread below's last even band, and goes last. Without a
+// barrier between the parities, a thread slower on its even bands and one
+// slower on its odd bands even out (bench/README.md). Ends with a barrier.
 template <class Visit>
 void scatter_own_bands(World& w, BandMark which, Visit visit) {
   const BandRange r = own_bands(w);

@@ -24,9 +24,9 @@ class SimulationError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// The last scatter a band finished (sim/physics/bands.hpp), as that
-// scatter's epoch. A copied or assigned World starts with none: its step
-// count may be behind the marks the band had.
+// The last mark a band took (sim/physics/bands.hpp: a scatter or the nodal
+// update finished), as that mark's epoch. A copied or assigned World starts
+// with none: its step count may be behind the marks the band had.
 struct BandDone {
   std::atomic<long> epoch{0};
   BandDone() = default;
@@ -62,7 +62,7 @@ struct World {
   int bins = 0, bin_i0 = 0, bin_j0 = 0, bin_width = 0;
   int bad_point = 0;              // scene index of the first point off the grid (the number of points if none)
   std::vector<int> thread_bands;  // thread t owns bands [thread_bands[t], thread_bands[t+1])
-  std::vector<BandDone> band_done;  // per band: the last scatter that finished it
+  std::vector<BandDone> band_done;  // per band: its last mark (bands.hpp)
   long step_serial = 0;           // steps located so far (prepare_locate)
   std::vector<double> band_sums;  // per band partial sums of the step's reductions
   Team team;                      // the step's threads (sim/physics/team.hpp)
