@@ -133,7 +133,7 @@ struct NodeSums {
   double* arrays[N];
   int stride = 0;
   int base = -1;  // grid index of the base node held, -1 for none
-  Lane4 rows[N][3];
+  Lane4 rows[N][3] = {};
 
   // Holds the rows of base node `at`, writing back the ones held before.
   void hold(int at) {

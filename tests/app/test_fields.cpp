@@ -288,7 +288,7 @@ TEST(Materials, ChangesOfEarlierStagesApply) {
   sim::StageSpec trigger;
   trigger.name = "trigger";
   trigger.type = sim::StageType::MaterialChange;
-  trigger.changes = {sim::MaterialChange{0, "cohesion", 0.0}};
+  trigger.changes = {sim::MaterialChange{0, "cohesion", 0.0, false, {}}};
   sim::StageSpec slide;
   slide.name = "slide";
   s.stages = {gravity, trigger, slide};

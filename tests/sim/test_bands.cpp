@@ -74,9 +74,12 @@ void expect_ordered(const std::vector<int>& starts) {
         EXPECT_LT(b, starts[log[b].thread + 1]) << "band " << b;
       }
       if (b % 2 == 0) continue;
-      if (b > 0) EXPECT_GT(log[b].start, log[b - 1].end) << "odd band " << b << " before " << b - 1;
-      if (b + 1 < bands)
+      if (b > 0) {
+        EXPECT_GT(log[b].start, log[b - 1].end) << "odd band " << b << " before " << b - 1;
+      }
+      if (b + 1 < bands) {
         EXPECT_GT(log[b].start, log[b + 1].end) << "odd band " << b << " before " << b + 1;
+      }
     }
   }
 }
@@ -96,8 +99,11 @@ TEST(Bands, OneThreadVisitsEveryBandEvenThenOdd) {
   const std::vector<Visit> log = scatter_log(w, sim::BandMark::Mass, team);
   for (int b = 0; b < 7; ++b) {
     ASSERT_GE(log[b].start, 0);
-    for (int e = 0; e < 7; e += 2)
-      if (b % 2 == 1) EXPECT_GT(log[b].start, log[e].end);
+    for (int e = 0; e < 7; e += 2) {
+      if (b % 2 == 1) {
+        EXPECT_GT(log[b].start, log[e].end);
+      }
+    }
   }
 }
 

@@ -131,7 +131,7 @@ TEST(PointStrength, ANumberAfterTheFieldReplacesIt) {
   sim::StageSpec again = s.stages[1];
   again.name = "uniform";
   const int soil = soil_index(s);
-  again.changes = {sim::MaterialChange{soil, "friction_angle", 25 * kDeg}};
+  again.changes = {sim::MaterialChange{soil, "friction_angle", 25 * kDeg, false, {}}};
   s.stages.insert(s.stages.begin() + 2, again);
   sim::Simulation sim(s);
   sim::Observer quiet;
