@@ -43,8 +43,11 @@ TEST(RandomFieldKeys, TruncatedNormalFrictionAngleIsReadInRadians) {
   EXPECT_EQ(field->field.theta_x, 20);
   EXPECT_EQ(field->field.theta_y, 2);
   EXPECT_EQ(field->field.seed, 7u);
-  for (const sim::MaterialChange& c : s.stages[1].changes)
-    if (c.property != "friction_angle") EXPECT_FALSE(c.has_field) << c.property;
+  for (const sim::MaterialChange& c : s.stages[1].changes) {
+    if (c.property != "friction_angle") {
+      EXPECT_FALSE(c.has_field) << c.property;
+    }
+  }
 }
 
 TEST(RandomFieldKeys, LogNormalCohesionIsReadInPascals) {
