@@ -170,4 +170,20 @@ Image read_png(const std::string& path) {
   return img;
 }
 
+PngSize png_size(const std::string& path) {
+  FILE* fp = std::fopen(path.c_str(), "rb");
+  if (!fp) throw FileError(path, "cannot open PNG: " + errno_text());
+  unsigned char head[24] = {0};  // signature, IHDR length and type, width, height
+  const std::size_t got = std::fread(head, 1, sizeof head, fp);
+  std::fclose(fp);
+  if (got < 8 || png_sig_cmp(head, 0, 8) != 0) throw FileError(path, "not a PNG file (bad signature)");
+  if (got != sizeof head || std::memcmp(head + 12, "IHDR", 4) != 0)
+    throw FileError(path, "corrupt PNG: no IHDR chunk first");
+  auto big_endian = [&](int at) {
+    return int(png_uint_32(head[at]) << 24 | png_uint_32(head[at + 1]) << 16 |
+               png_uint_32(head[at + 2]) << 8 | png_uint_32(head[at + 3]));
+  };
+  return {big_endian(16), big_endian(20)};
+}
+
 }  // namespace render

@@ -21,4 +21,11 @@ void write_png(const Image& img, const std::string& path, const PngOptions& opt 
 // Throws FileError naming the path if it is missing, not a PNG or corrupt.
 Image read_png(const std::string& path);
 
+// Width and height from the PNG's header alone (the IHDR chunk, which the
+// format puts first). Throws FileError as read_png does.
+struct PngSize {
+  int width = 0, height = 0;
+};
+PngSize png_size(const std::string& path);
+
 }  // namespace render

@@ -80,6 +80,27 @@ int count_frames(const std::string& frames_dir) {
   return n;
 }
 
+namespace {
+
+// The size every frame of dir has. ffmpeg starts its filters again where the
+// frames' size changes, and a GIF's one palette for the clip then covered
+// only the frames after the change: the gallery's side-by-side GIF lost the
+// first half of its slide that way. So a clip of two sizes is refused.
+PngSize one_frame_size(const fs::path& dir) {
+  const PngSize first = png_size((dir / frame_name(0)).string());
+  for (int k = 1, n = count_frames(dir.string()); k < n; ++k) {
+    const PngSize s = png_size((dir / frame_name(k)).string());
+    if (s.width != first.width || s.height != first.height)
+      throw VideoError("frame " + (dir / frame_name(k)).string() + " is " +
+                       std::to_string(s.width) + " x " + std::to_string(s.height) + " px, but " +
+                       frame_name(0) + " is " + std::to_string(first.width) + " x " +
+                       std::to_string(first.height) + ": every frame of a clip must have one size");
+  }
+  return first;
+}
+
+}  // namespace
+
 bool ffmpeg_available(std::string* why, const std::string& ffmpeg) {
   auto fail = [why](const std::string& msg) {
     if (why) *why = msg;
@@ -127,7 +148,7 @@ VideoFiles encode_video(const std::string& frames_dir, const std::string& out_di
   if (!fs::is_directory(out, ec)) {
     throw VideoError("output directory " + out.string() + " does not exist");
   }
-  const Image frame0 = read_png(first.string());  // size for the GIF; fails early if corrupt
+  const PngSize size = one_frame_size(dir);  // fails early on a clip of two sizes
   auto input_of = [&](const fs::path& d) {
     return std::vector<std::string>{"-framerate", std::to_string(opt.fps), "-start_number", "0",
                                     "-i", escape_percent(d.string()) + "/%06d.png"};
@@ -148,7 +169,8 @@ VideoFiles encode_video(const std::string& frames_dir, const std::string& out_di
   if (opt.gif) {
     files.gif = (out / (name + ".gif")).string();
     const bool own = !opt.gif_frames_dir.empty();
-    const int width = std::min(opt.gif_width, frame0.width());
+    if (own) one_frame_size(fs::absolute(opt.gif_frames_dir));
+    const int width = std::min(opt.gif_width, size.width);
     const std::string scale = own ? "" : ",scale=" + std::to_string(width) + ":-1:flags=lanczos";
     // One palette for the whole clip (palettegen), then dithered mapping.
     const std::string graph =

@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
+#include <stdexcept>
+#include <string>
 
 #include "gallery/src/gallery_figure.hpp"
 #include "gallery/src/gallery_parts.hpp"
@@ -34,6 +37,26 @@ const Frame& frame_at(const std::vector<Frame>& frames, double t) {
   return frames[k];
 }
 
+// Pages 0..pages-1 as dir/000000.png ..., every one the size of the last: a
+// caption grows by a line where its run has ended, and ffmpeg drops what it
+// has filtered where the frames' size changes (render::encode_video refuses
+// such a clip). Earlier pages are padded below with the page's white.
+void write_pages(const fs::path& dir, int pages, const std::function<render::Image(int)>& page_at) {
+  const render::Image last = page_at(pages - 1);
+  for (int page = 0; page < pages; ++page) {
+    render::Image image = page == pages - 1 ? last : page_at(page);
+    if (image.width() > last.width() || image.height() > last.height())
+      throw std::logic_error("side-by-side page " + std::to_string(page) +
+                             " is larger than the last page");
+    if (image.width() != last.width() || image.height() != last.height()) {
+      render::Image padded(last.width(), last.height());
+      padded.blit(image, 0, 0);
+      image = std::move(padded);
+    }
+    render::write_png(image, (dir / frame_name(page)).string());
+  }
+}
+
 }  // namespace
 
 std::string fmt(double v, int digits) {
@@ -62,10 +85,14 @@ std::vector<render::VideoFiles> write_side_by_side(const std::vector<const RunRe
                                                    const fs::path& out, const std::string& name) {
   double end = 0;
   std::vector<const std::vector<float>*> values;
+  std::vector<const Frame*> all;
   for (const RunResult* r : runs) {
     if (r->slide_frames.empty()) return {};  // a run that failed before its slide
     end = std::max(end, r->slide_frames.back().time);
-    for (const Frame& f : r->slide_frames) values.push_back(&f.values[0]);
+    for (const Frame& f : r->slide_frames) {
+      values.push_back(&f.values[0]);
+      all.push_back(&f);
+    }
   }
   const int pages = int(std::ceil(end / kInterval - 1e-6)) + 1;
   if (pages < 2) return {};
@@ -76,13 +103,10 @@ std::vector<render::VideoFiles> write_side_by_side(const std::vector<const RunRe
   const fs::path frames = work / "frames", gif_frames = work / "gif-frames";
   fs::create_directories(frames);
   fs::create_directories(gif_frames);
-  std::vector<const Frame*> all;
-  for (const RunResult* r : runs)
-    for (const Frame& f : r->slide_frames) all.push_back(&f);
   const Window window = figure_window(runs.front()->scenario, all);
   FramePainter painter(kPanelWidth, 300);
   render::Font font;
-  for (int page = 0; page < pages; ++page) {
+  auto page_at = [&](int page, int width) {
     const double t = page * kInterval;
     std::vector<FigurePanel> panels;
     for (std::size_t k = 0; k < runs.size(); ++k) {
@@ -94,12 +118,11 @@ std::vector<render::VideoFiles> write_side_by_side(const std::vector<const RunRe
     shape.cols = cols;
     shape.window = window;
     shape.title = title + ", t = " + fmt(t) + " s";
-    for (const auto& [dir, width] : {std::pair{frames, kPanelWidth}, {gif_frames, kGifPanelWidth}}) {
-      shape.panel_width = width;
-      render::write_png(figure_page(font, painter, panels, 0, style, range, shape).image,
-                        (dir / frame_name(page)).string());
-    }
-  }
+    shape.panel_width = width;
+    return figure_page(font, painter, panels, 0, style, range, shape).image;
+  };
+  for (const auto& [dir, width] : {std::pair{frames, kPanelWidth}, {gif_frames, kGifPanelWidth}})
+    write_pages(dir, pages, [&, w = width](int page) { return page_at(page, w); });
   render::VideoOptions options = video_options(kInterval);
   options.gif_frames_dir = gif_frames.string();
   const render::VideoFiles v = render::encode_video(frames.string(), work.string(), name, options);

@@ -86,6 +86,14 @@ int mp4_frames(const fs::path& mp4) {
   return std::stoi(r.output);
 }
 
+// Seconds a GIF plays, as ffprobe reads it; -1 without ffprobe.
+double gif_seconds(const fs::path& gif) {
+  const render::ProcessResult r = render::run_process(
+      {"ffprobe", "-v", "error", "-show_entries", "format=duration", "-of", "csv=p=0", gif.string()});
+  if (!r.ok()) return -1;
+  return std::stod(r.output);
+}
+
 // One test: ctest runs each test in a process of its own, and the gallery
 // is the expensive part.
 TEST(Gallery, EveryFigureAndBothAnimationsFromCoarseScenes) {
@@ -127,6 +135,8 @@ TEST(Gallery, EveryFigureAndBothAnimationsFromCoarseScenes) {
   if (played >= 0) {
     const int pages = int(kSlide / 0.5) + 1;
     EXPECT_NEAR(played, pages * double(app::kPlayFps) / 4, 1.0) << "frames of the side-by-side mp4";
+    // The GIF shows every page.
+    EXPECT_NEAR(gif_seconds(out / (std::string(kSideBySide) + ".gif")), pages / 4.0, 0.05);
   }
 
   EXPECT_FALSE(fs::exists(out / ".work"));

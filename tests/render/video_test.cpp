@@ -112,11 +112,13 @@ TEST(Video, PlaysAtTwentyFiveFpsAndTakesTheGifFramesGiven) {
   ASSERT_TRUE(mp4.ok()) << mp4.output;
   EXPECT_NE(mp4.output.find("r_frame_rate=25/1"), std::string::npos) << mp4.output;
   EXPECT_NE(mp4.output.find("nb_read_frames=25"), std::string::npos) << mp4.output;
-  const ProcessResult gif = run_process({"ffprobe", "-v", "error", "-select_streams", "v:0",
-                                         "-show_entries", "stream=width", "-of",
-                                         "default=nw=1", out.gif});
+  const ProcessResult gif =
+      run_process({"ffprobe", "-v", "error", "-count_frames", "-select_streams", "v:0",
+                   "-show_entries", "stream=width,nb_read_frames:format=duration", "-of",
+                   "default=nw=1", out.gif});
   ASSERT_TRUE(gif.ok()) << gif.output;
   EXPECT_NE(gif.output.find("width=32"), std::string::npos) << gif.output;
+  EXPECT_NE(gif.output.find("duration=1.000000"), std::string::npos) << gif.output;
 }
 
 TEST(Video, FailuresThrowAndLeaveNoOutput) {
@@ -136,8 +138,16 @@ TEST(Video, FailuresThrowAndLeaveNoOutput) {
 
   std::string why;
   if (!ffmpeg_available(&why)) GTEST_SKIP() << "ffmpeg unusable: " << why;
-  // A corrupt second frame makes ffmpeg itself fail: its message comes back.
-  std::ofstream(dir.file("000001.png")) << "not a png";
+  // A second frame corrupt after its header makes ffmpeg itself fail: its
+  // message comes back.
+  {
+    std::ifstream first(dir.file("000000.png"), std::ios::binary);
+    char header[33];  // the signature and the whole IHDR chunk
+    first.read(header, sizeof header);
+    std::ofstream second(dir.file("000001.png"), std::ios::binary);
+    second.write(header, sizeof header);
+    second << "not a png";
+  }
   try {
     encode_video(dir.path(), dir.path(), "clip");
     FAIL() << "expected VideoError";
@@ -146,6 +156,27 @@ TEST(Video, FailuresThrowAndLeaveNoOutput) {
   }
   EXPECT_FALSE(fs::exists(dir.file("clip.mp4")));
   EXPECT_TRUE(no_partial_files(dir.path()));
+}
+
+// ffmpeg starts its filters again where the frames' size changes, and the
+// GIF's one palette then covered only the frames after it (the gallery's
+// side-by-side GIF lost the first half of its slide): refused before ffmpeg.
+TEST(Video, RefusesAClipOfTwoFrameSizes) {
+  render_test::TempDir dir;
+  write_frames(dir.path(), 3, 32, 32);
+  write_png(Image(32, 40, kWhite), dir.file("000002.png"));
+  try {
+    encode_video(dir.path(), dir.path(), "clip");
+    FAIL() << "expected VideoError";
+  } catch (const VideoError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("000002.png is 32 x 40 px, but 000000.png is 32 x 32"), std::string::npos)
+        << what;
+  }
+  EXPECT_FALSE(fs::exists(dir.file("clip.mp4")));
+  EXPECT_EQ(png_size(dir.file("000002.png")).height, 40);
+  std::ofstream(dir.file("000003.png")) << "not a png";
+  EXPECT_THROW(png_size(dir.file("000003.png")), FileError);
 }
 
 }  // namespace
