@@ -135,7 +135,7 @@ TEST(Gallery, EveryFigureAndBothAnimationsFromCoarseScenes) {
   if (played >= 0) {
     const int pages = int(kSlide / 0.5) + 1;
     EXPECT_NEAR(played, pages * double(app::kPlayFps) / 4, 1.0) << "frames of the side-by-side mp4";
-    // The GIF shows every page.
+    // The GIF shows every page, each for 25 cs, without repeats.
     EXPECT_NEAR(gif_seconds(out / (std::string(kSideBySide) + ".gif")), pages / 4.0, 0.05);
   }
 

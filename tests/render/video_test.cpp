@@ -91,7 +91,8 @@ TEST(Video, EncodesMp4AndGifFromNumberedFrames) {
 }
 
 // Issue 14: 4 frames shown at 4 per second play at 25 fps for the same 1 s,
-// each frame repeated; the GIF comes from its own frames when given.
+// each frame repeated; the GIF comes from its own frames when given, and
+// holds each for 25 cs instead of repeating it.
 TEST(Video, PlaysAtTwentyFiveFpsAndTakesTheGifFramesGiven) {
   std::string why;
   if (!ffmpeg_available(&why)) GTEST_SKIP() << "ffmpeg unusable: " << why;
@@ -118,6 +119,7 @@ TEST(Video, PlaysAtTwentyFiveFpsAndTakesTheGifFramesGiven) {
                    "default=nw=1", out.gif});
   ASSERT_TRUE(gif.ok()) << gif.output;
   EXPECT_NE(gif.output.find("width=32"), std::string::npos) << gif.output;
+  EXPECT_NE(gif.output.find("nb_read_frames=4"), std::string::npos) << gif.output;
   EXPECT_NE(gif.output.find("duration=1.000000"), std::string::npos) << gif.output;
 }
 
