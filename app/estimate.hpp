@@ -23,7 +23,7 @@ using sim::kBytesPerNode;
 using sim::kBytesPerPoint;
 constexpr double kVtkBytesPerPoint = 280;      // 268 measured (ASCII .vtu)
 constexpr double kFrameBytesPerPixel = 0.3;    // PNG 0.08 measured; GIF copy and videos
-constexpr double kPaintSecondsPerPixel = 0.2e-6;  // 0.18 us measured, painting and encoding
+constexpr double kPaintSecondsPerPixel = 0.1e-6;  // 0.076-0.084 us measured, painting and encoding
 
 // The limits a run is refused past unless --allow-long.
 constexpr double kMaxWallSeconds = 4 * 3600.0;
