@@ -148,7 +148,11 @@ void write_png(const Image& img, const std::string& path, const PngOptions& opt)
   }
 }
 
-Image read_png(const std::string& path) {
+namespace {
+
+// The file open at its start, once its first 8 bytes are PNG's signature;
+// the caller closes it. Throws FileError naming the path otherwise.
+FILE* open_png(const std::string& path) {
   FILE* fp = std::fopen(path.c_str(), "rb");
   if (!fp) throw FileError(path, "cannot open PNG: " + errno_text());
   unsigned char sig[8] = {0};
@@ -158,6 +162,13 @@ Image read_png(const std::string& path) {
     throw FileError(path, "not a PNG file (bad signature)");
   }
   std::rewind(fp);
+  return fp;
+}
+
+}  // namespace
+
+Image read_png(const std::string& path) {
+  FILE* fp = open_png(path);
   std::vector<std::uint8_t> pixels;
   std::vector<png_bytep> rows;
   int w = 0, h = 0;
@@ -171,12 +182,10 @@ Image read_png(const std::string& path) {
 }
 
 PngSize png_size(const std::string& path) {
-  FILE* fp = std::fopen(path.c_str(), "rb");
-  if (!fp) throw FileError(path, "cannot open PNG: " + errno_text());
+  FILE* fp = open_png(path);
   unsigned char head[24] = {0};  // signature, IHDR length and type, width, height
   const std::size_t got = std::fread(head, 1, sizeof head, fp);
   std::fclose(fp);
-  if (got < 8 || png_sig_cmp(head, 0, 8) != 0) throw FileError(path, "not a PNG file (bad signature)");
   if (got != sizeof head || std::memcmp(head + 12, "IHDR", 4) != 0)
     throw FileError(path, "corrupt PNG: no IHDR chunk first");
   auto big_endian = [&](int at) {
