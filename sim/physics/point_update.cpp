@@ -43,23 +43,27 @@ struct MaterialLanesCache {
   }
 };
 
-// Velocity gradient L_ab = sum_i v_ia dS_ip/dx_b of one point, a stencil row
-// at a time; L = {xx, xy, yx, yy}.
-void velocity_gradient(const Grid& g, const Stencil& st, double L[4]) {
-  Lane4 lxx{}, lxy{}, lyx{}, lyy{};
+// Velocity gradients L_ab = sum_i v_ia dS_ip/dx_b of two points, a stencil
+// row at a time, one point in each half of a Lane8; L = {xx, xy, yx, yy},
+// written to L[.][l] and L[.][l + 1].
+void velocity_gradients(const Grid& g, const Stencil& a, const Stencil& c, double L[4][8], int l) {
+  Lane8 lxx{}, lxy{}, lyx{}, lyy{};
   for (int b = 0; b < 3; ++b) {
-    const int row = g.node(st.base_i, st.base_j + b);
-    const Lane4 gx = lanes3(st.dx) * st.wy[b], gy = lanes3(st.wx) * st.dy[b];
-    const Lane4 vx = load4(&g.vx[row]), vy = load4(&g.vy[row]);
+    const int ra = g.node(a.base_i, a.base_j + b), rc = g.node(c.base_i, c.base_j + b);
+    const Lane8 gx = join4(lanes3(a.dx) * a.wy[b], lanes3(c.dx) * c.wy[b]);
+    const Lane8 gy = join4(lanes3(a.wx) * a.dy[b], lanes3(c.wx) * c.dy[b]);
+    const Lane8 vx = load4x2(g.vx.data(), ra, rc);
+    const Lane8 vy = load4x2(g.vy.data(), ra, rc);
     lxx += vx * gx;
     lxy += vx * gy;
     lyx += vy * gx;
     lyy += vy * gy;
   }
-  L[0] = sum3(lxx);
-  L[1] = sum3(lxy);
-  L[2] = sum3(lyx);
-  L[3] = sum3(lyy);
+  const Lane8 sums[4] = {lxx, lxy, lyx, lyy};
+  for (int k = 0; k < 4; ++k) {
+    L[k][l] = sum3(low4(sums[k]));
+    L[k][l + 1] = sum3(high4(sums[k]));
+  }
 }
 
 // The stress update of points p[0..count), count <= 8, eight at a time
@@ -80,11 +84,9 @@ void update_eight_stresses(World& w, const int* p, int count, double dt, const M
   const MohrCoulomb* surface[8];
   double L[4][8], old[4][8], density[8], mass[8];
   Int8 was_yielded;
+  for (int l = 0; l < 8; ++l) q[l] = p[std::min(l, count - 1)];
+  for (int l = 0; l < 8; l += 2) velocity_gradients(w.grid, w.stencils[q[l]], w.stencils[q[l + 1]], L, l);
   for (int l = 0; l < 8; ++l) {
-    q[l] = p[std::min(l, count - 1)];
-    double gradient[4];
-    velocity_gradient(w.grid, w.stencils[q[l]], gradient);
-    for (int c = 0; c < 4; ++c) L[c][l] = gradient[c];
     old[0][l] = pts.sxx[q[l]];
     old[1][l] = pts.syy[q[l]];
     old[2][l] = pts.sxy[q[l]];
@@ -217,18 +219,10 @@ void grid_to_points(World& w, const StepInput& in) {
     // square root per material instead of one per point.
     double fastest[256];
     std::fill(fastest, fastest + kinds, -1.0);
-    for (int s = w.band_start[band]; s < w.band_start[band + 1]; ++s) {
-      const int p = w.order[s];
-      const Stencil& st = w.stencils[p];
-      Lane4 sax{}, say{}, svx{}, svy{};
-      for (int b = 0; b < 3; ++b) {
-        const int row = g.node(st.base_i, st.base_j + b);
-        const Lane4 S = lanes3(st.wx) * st.wy[b];
-        sax += S * load4(&g.ax[row]);
-        say += S * load4(&g.ay[row]);
-        svx += S * load4(&g.vx[row]);
-        svy += S * load4(&g.vy[row]);
-      }
+    // Point p's new velocity and position from its sums S_ip a_i and S_ip v_i
+    // (three stencil rows in the lanes of each), and its terms of the band's sums.
+    const auto update = [&](int p, const Stencil& st, const Lane4& sax, const Lane4& say,
+                            const Lane4& svx, const Lane4& svy) {
       const double vx = sum3(svx), vy = sum3(svy);
       const double dx = in.dt * vx, dy = in.dt * vy;  // Eq. (29)
       px[p] += dx;
@@ -257,6 +251,35 @@ void grid_to_points(World& w, const StepInput& in) {
         const double wx = sum3(swx), wy = sum3(swy);
         walled += 0.5 * m * in.dt * in.dt * (wx * wx + wy * wy);
       }
+    };
+    // The sums S_ip a_i and S_ip v_i of two points at once, one in each half
+    // of a Lane8: {ax, ay, vx, vy}.
+    const auto gather_two = [&](const Stencil& a, const Stencil& c, Lane8 sums[4]) {
+      for (int b = 0; b < 3; ++b) {
+        const int ra = g.node(a.base_i, a.base_j + b), rc = g.node(c.base_i, c.base_j + b);
+        const Lane8 S = join4(lanes3(a.wx) * a.wy[b], lanes3(c.wx) * c.wy[b]);
+        sums[0] += S * load4x2(g.ax.data(), ra, rc);
+        sums[1] += S * load4x2(g.ay.data(), ra, rc);
+        sums[2] += S * load4x2(g.vx.data(), ra, rc);
+        sums[3] += S * load4x2(g.vy.data(), ra, rc);
+      }
+    };
+    // The points two by two, each pair updated in its order; where a band
+    // has an odd count, its last point in both halves, updated once.
+    const int end = w.band_start[band + 1];
+    int s = w.band_start[band];
+    for (; s + 1 < end; s += 2) {
+      const int p = w.order[s], q = w.order[s + 1];
+      Lane8 sums[4] = {};
+      gather_two(w.stencils[p], w.stencils[q], sums);
+      update(p, w.stencils[p], low4(sums[0]), low4(sums[1]), low4(sums[2]), low4(sums[3]));
+      update(q, w.stencils[q], high4(sums[0]), high4(sums[1]), high4(sums[2]), high4(sums[3]));
+    }
+    if (s < end) {
+      const int p = w.order[s];
+      Lane8 sums[4] = {};
+      gather_two(w.stencils[p], w.stencils[p], sums);
+      update(p, w.stencils[p], low4(sums[0]), low4(sums[1]), low4(sums[2]), low4(sums[3]));
     }
     double signal = 0;
     for (int k = 0; k < kinds; ++k)
