@@ -166,6 +166,33 @@ struct NodeSums {
   }
 };
 
+// NodeSums of two nodal arrays side by side, the first array's rows in the
+// low halves of three Lane8 and the second's in the high halves: one vector
+// operation adds a point's terms to both (the force scatter's fx and fy).
+// Each lane receives the same terms in the same order, so the same bits.
+struct NodeSumsSideBySide {
+  double* low;
+  double* high;
+  int stride = 0;
+  int base = -1;  // grid index of the base node held, -1 for none
+  Lane8 rows[3] = {};
+
+  void hold(int at) {
+    if (at == base) return;
+    flush();
+    base = at;
+    for (int b = 0; b < 3; ++b) rows[b] = join4(load4(low + base + b * stride), load4(high + base + b * stride));
+  }
+  void flush() {
+    if (base < 0) return;
+    for (int b = 0; b < 3; ++b) {
+      store4(low + base + b * stride, low4(rows[b]));
+      store4(high + base + b * stride, high4(rows[b]));
+    }
+    base = -1;
+  }
+};
+
 // One axis of the stencils of one point (T = double, I = int) or eight
 // (T = Lane8, I = Int8). The base node is the first node that can carry a
 // non-zero weight: x_i > x_p - h - l_p, i.e. floor((x_p - l_p - origin) / h).

@@ -134,20 +134,22 @@ void update_eight_stresses(World& w, const int* p, int count, double dt, const M
 }
 
 // Adds point p's internal and body forces to its nodes, Eqs. (16), (17):
-// `sums` holds the rows of fx and fy at p's base node.
-void scatter_point_force(World& w, int p, const Vec2& gravity, NodeSums<2>& sums) {
+// `sums` holds the rows of fx (low halves) and fy (high halves) at p's base
+// node, so each line below is both components at once.
+void scatter_point_force(World& w, int p, const Vec2& gravity, NodeSumsSideBySide& sums) {
   const Particles& pts = w.points;
   const Stencil& st = w.stencils[p];
   const double V = pts.volume(p);
   const double sxx = pts.sxx[p], syy = pts.syy[p], sxy = pts.sxy[p];
   const double mgx = pts.mass[p] * gravity[0], mgy = pts.mass[p] * gravity[1];
+  const auto halves = [](double lo, double hi) { return Lane8{lo, lo, lo, lo, hi, hi, hi, hi}; };
+  const Lane8 first = halves(sxx, sxy), second = halves(sxy, syy), mg = halves(mgx, mgy);
   sums.hold(w.grid.node(st.base_i, st.base_j));
   for (int b = 0; b < 3; ++b) {
     const Lane4 S = lanes3(st.wx) * st.wy[b];
     const Lane4 gx = lanes3(st.dx) * st.wy[b], gy = lanes3(st.wx) * st.dy[b];  // grad S_ip
     // f_int = -sigma_p . grad S_ip V_p, Eq. (16); f_ext = m_p b S_ip, Eq. (17).
-    sums.rows[0][b] += -V * (sxx * gx + sxy * gy) + S * mgx;
-    sums.rows[1][b] += -V * (sxy * gx + syy * gy) + S * mgy;
+    sums.rows[b] += -V * (first * join4(gx, gx) + second * join4(gy, gy)) + join4(S, S) * mg;
   }
 }
 
@@ -182,7 +184,7 @@ void update_stress_and_forces(World& w, const StepInput& in) {
   const MohrCoulomb* own = own_strength(w);
   scatter_own_bands(w, BandMark::Forces, [&](int band) {
     MaterialLanesCache cache;
-    NodeSums<2> forces{{w.grid.fx.data(), w.grid.fy.data()}, w.grid.stride};
+    NodeSumsSideBySide forces{w.grid.fx.data(), w.grid.fy.data(), w.grid.stride};
     double total = 0;
     const int end = w.band_start[band + 1];
     for (int s = w.band_start[band]; s < end; s += 8) {
