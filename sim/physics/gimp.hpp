@@ -111,8 +111,9 @@ inline double sum3(const Lane4& v) { return (v[0] + v[1]) + v[2]; }
 // Two points' stencil rows side by side: the gathers of G2P and of the
 // velocity gradient take two points at once in the halves of a Lane8, one
 // vector operation where two Lane4 took two (issue 17, tenth pass: on one
-// thread G2P went from 12.6 to 9.9 ns per point, the stress phase from 25.3
-// to 23.1). Lane by lane the operations are the same, so are the bits.
+// thread the column's G2P went from 12.4 to 9.6 ns per point, its stress
+// phase from 26.6 to 24.9, bench/README.md). Lane by lane the operations are
+// the same, so are the bits.
 inline Lane8 join4(const Lane4& a, const Lane4& b) {
   return __builtin_shufflevector(a, b, 0, 1, 2, 3, 4, 5, 6, 7);
 }
