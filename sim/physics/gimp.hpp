@@ -119,6 +119,21 @@ inline Lane8 join4(const Lane4& a, const Lane4& b) {
 }
 inline Lane4 low4(const Lane8& v) { return __builtin_shufflevector(v, v, 0, 1, 2, 3); }
 inline Lane4 high4(const Lane8& v) { return __builtin_shufflevector(v, v, 4, 5, 6, 7); }
+// The sums of three of both halves of four Lane8 a, b, c, d, in this order:
+// {sum3(low4(a)), sum3(high4(a)), sum3(low4(b)), ..., sum3(high4(d))}. The
+// lanes are moved so that one vector addition adds all eight first terms to
+// the eight second terms, and the next adds the third: each lane is still
+// (v0 + v1) + v2, the same bits as sum3.
+inline Lane8 sum3_of_halves(const Lane8& a, const Lane8& b, const Lane8& c, const Lane8& d) {
+  const Lane8 ab = __builtin_shufflevector(a, b, 0, 4, 8, 12, 1, 5, 9, 13);
+  const Lane8 cd = __builtin_shufflevector(c, d, 0, 4, 8, 12, 1, 5, 9, 13);
+  const Lane8 ab2 = __builtin_shufflevector(a, b, 2, 6, 10, 14, 2, 6, 10, 14);
+  const Lane8 cd2 = __builtin_shufflevector(c, d, 2, 6, 10, 14, 2, 6, 10, 14);
+  const Lane8 first = __builtin_shufflevector(ab, cd, 0, 1, 2, 3, 8, 9, 10, 11);
+  const Lane8 second = __builtin_shufflevector(ab, cd, 4, 5, 6, 7, 12, 13, 14, 15);
+  const Lane8 third = __builtin_shufflevector(ab2, cd2, 0, 1, 2, 3, 8, 9, 10, 11);
+  return (first + second) + third;
+}
 // Grid row `row_a` of `nodes` in the low half, `row_c` in the high half.
 inline Lane8 load4x2(const double* nodes, int row_a, int row_c) {
   return join4(load4(nodes + row_a), load4(nodes + row_c));

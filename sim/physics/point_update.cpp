@@ -44,9 +44,9 @@ struct MaterialLanesCache {
 };
 
 // Velocity gradients L_ab = sum_i v_ia dS_ip/dx_b of two points, a stencil
-// row at a time, one point in each half of a Lane8; L = {xx, xy, yx, yy},
-// written to L[.][l] and L[.][l + 1].
-void velocity_gradients(const Grid& g, const Stencil& a, const Stencil& c, double L[4][8], int l) {
+// row at a time, one point in each half of a Lane8; L = {xx, xy, yx, yy}, as
+// {xx_a, xx_c, xy_a, xy_c, yx_a, yx_c, yy_a, yy_c}.
+Lane8 velocity_gradients(const Grid& g, const Stencil& a, const Stencil& c) {
   Lane8 lxx{}, lxy{}, lyx{}, lyy{};
   for (int b = 0; b < 3; ++b) {
     const int ra = g.node(a.base_i, a.base_j + b), rc = g.node(c.base_i, c.base_j + b);
@@ -59,49 +59,87 @@ void velocity_gradients(const Grid& g, const Stencil& a, const Stencil& c, doubl
     lyx += vy * gx;
     lyy += vy * gy;
   }
-  const Lane8 sums[4] = {lxx, lxy, lyx, lyy};
-  for (int k = 0; k < 4; ++k) {
-    L[k][l] = sum3(low4(sums[k]));
-    L[k][l + 1] = sum3(high4(sums[k]));
-  }
+  return sum3_of_halves(lxx, lxy, lyx, lyy);
 }
+
+// The four components of eight points' velocity gradients, one point a lane,
+// from velocity_gradients of points (0, 1), (2, 3), (4, 5), (6, 7).
+void gradient_lanes(const Lane8 pairs[4], Lane8 L[4]) {
+  const Lane8 xx_xy01 = __builtin_shufflevector(pairs[0], pairs[1], 0, 1, 8, 9, 2, 3, 10, 11);
+  const Lane8 xx_xy23 = __builtin_shufflevector(pairs[2], pairs[3], 0, 1, 8, 9, 2, 3, 10, 11);
+  const Lane8 yx_yy01 = __builtin_shufflevector(pairs[0], pairs[1], 4, 5, 12, 13, 6, 7, 14, 15);
+  const Lane8 yx_yy23 = __builtin_shufflevector(pairs[2], pairs[3], 4, 5, 12, 13, 6, 7, 14, 15);
+  L[0] = __builtin_shufflevector(xx_xy01, xx_xy23, 0, 1, 2, 3, 8, 9, 10, 11);
+  L[1] = __builtin_shufflevector(xx_xy01, xx_xy23, 4, 5, 6, 7, 12, 13, 14, 15);
+  L[2] = __builtin_shufflevector(yx_yy01, yx_yy23, 0, 1, 2, 3, 8, 9, 10, 11);
+  L[3] = __builtin_shufflevector(yx_yy01, yx_yy23, 4, 5, 6, 7, 12, 13, 14, 15);
+}
+
+// Whether eight points are stored one after another, as most groups of a
+// band are while the points are stored in cell order (point_order.hpp): their
+// arrays are then read and written as vectors instead of lane by lane.
+bool stored_in_a_run(const int q[8], int count) {
+  if (count < 8) return false;
+  for (int l = 1; l < 8; ++l)
+    if (q[l] != q[0] + l) return false;
+  return true;
+}
+Lane8 lanes_at(const double* a, const int q[8], bool run) {
+  if (run) return load8(a + q[0]);
+  Lane8 v;
+  for (int l = 0; l < 8; ++l) v[l] = a[q[l]];
+  return v;
+}
+void store_lanes(double* a, const int q[8], int count, bool run, const Lane8& v) {
+  if (run) {
+    std::memcpy(a + q[0], &v, sizeof v);
+    return;
+  }
+  for (int l = 0; l < count; ++l) a[q[l]] = v[l];
+}
+
+// What the force scatter needs of eight points just updated, one lane each,
+// handed over in registers: their new stress, their volume after Eq. (25)
+// and their mass, so the scatter reloads nothing and divides nothing.
+struct UpdatedLanes {
+  Lane8 sxx, syy, sxy, volume, mass;
+  double work[8];  // each point's stress work over the step (Eq. 3)
+};
 
 // The stress update of points p[0..count), count <= 8, eight at a time
 // (Eqs. 31, 24, 21-23, 25), one lane each: lanes past count repeat the last
-// point and are not stored. Writes each point's stress work over the step
-// (Eq. 3) to work[]. `own`: each point's Mohr-Coulomb surface where a random
-// field set them (sim/physics/point_strength.hpp), null otherwise.
+// point and are not stored. `own`: each point's Mohr-Coulomb surface where a
+// random field set them (sim/physics/point_strength.hpp), null otherwise.
 //
 // Eight at once because the return's regions (mohr_coulomb_return.hpp) are
 // selects, not branches: the step took 45 ns per point in this phase one
 // point at a time (stress and force, granular column, one thread), much of
 // it on branches that a yielding soil takes at random.
 void update_eight_stresses(World& w, const int* p, int count, double dt, const MohrCoulomb* own,
-                           MaterialLanesCache& cache, double work[8]) {
+                           MaterialLanesCache& cache, UpdatedLanes& out) {
   Particles& pts = w.points;
   int q[8];
   const MaterialConstants* mat[8];
   const MohrCoulomb* surface[8];
-  double L[4][8], old[4][8], density[8], mass[8];
+  Lane8 pairs[4], L[4];
   Int8 was_yielded;
   for (int l = 0; l < 8; ++l) q[l] = p[std::min(l, count - 1)];
-  for (int l = 0; l < 8; l += 2) velocity_gradients(w.grid, w.stencils[q[l]], w.stencils[q[l + 1]], L, l);
+  const bool run = stored_in_a_run(q, count);
+  for (int k = 0; k < 4; ++k)
+    pairs[k] = velocity_gradients(w.grid, w.stencils[q[2 * k]], w.stencils[q[2 * k + 1]]);
+  gradient_lanes(pairs, L);
   for (int l = 0; l < 8; ++l) {
-    old[0][l] = pts.sxx[q[l]];
-    old[1][l] = pts.syy[q[l]];
-    old[2][l] = pts.sxy[q[l]];
-    old[3][l] = pts.szz[q[l]];
-    density[l] = pts.density[q[l]];
-    mass[l] = pts.mass[q[l]];
     was_yielded[l] = pts.yielded[q[l]];
     mat[l] = &w.materials[pts.material[q[l]]];
     surface[l] = own ? &own[q[l]] : &mat[l]->mohr_coulomb;
   }
   const MaterialLanes& m = cache.get(mat, surface);
-  const Lane8 Lxx = load8(L[0]), Lxy = load8(L[1]), Lyx = load8(L[2]), Lyy = load8(L[3]);
+  const Lane8 &Lxx = L[0], &Lxy = L[1], &Lyx = L[2], &Lyy = L[3];
   const StrainOf<Lane8> de{dt * Lxx, dt * Lyy, 0.5 * dt * (Lxy + Lyx)};  // Eq. (31)
-  const StressOf<Lane8> before{load8(old[0]), load8(old[1]), load8(old[2]), load8(old[3])};
-  const Lane8 rho = load8(density), volume = load8(mass) / rho;  // at the start of the step
+  const StressOf<Lane8> before{lanes_at(pts.sxx.data(), q, run), lanes_at(pts.syy.data(), q, run),
+                               lanes_at(pts.sxy.data(), q, run), lanes_at(pts.szz.data(), q, run)};
+  const Lane8 m_p = lanes_at(pts.mass.data(), q, run), rho = lanes_at(pts.density.data(), q, run);
+  const Lane8 volume = m_p / rho;  // at the start of the step
   StressOf<Lane8> s = before;
   jaumann_rotate(s, 0.5 * dt * (Lxy - Lyx));  // Eq. (24)
   elastic_predictor(s, de, m);                // Eq. (21)
@@ -122,26 +160,31 @@ void update_eight_stresses(World& w, const int* p, int count, double dt, const M
   // Stress power of Eq. (3) over the step, midpoint stress.
   const Lane8 lane_work = volume * 0.5 * ((before.xx + s.xx) * de.xx + (before.yy + s.yy) * de.yy +
                                           2.0 * (before.xy + s.xy) * de.xy);
+  store_lanes(pts.sxx.data(), q, count, run, s.xx);
+  store_lanes(pts.syy.data(), q, count, run, s.yy);
+  store_lanes(pts.sxy.data(), q, count, run, s.xy);
+  store_lanes(pts.szz.data(), q, count, run, s.zz);
+  store_lanes(pts.density.data(), q, count, run, rho_after);
   for (int l = 0; l < count; ++l) {
-    pts.sxx[q[l]] = s.xx[l];
-    pts.syy[q[l]] = s.yy[l];
-    pts.sxy[q[l]] = s.xy[l];
-    pts.szz[q[l]] = s.zz[l];
-    pts.density[q[l]] = rho_after[l];
     pts.yielded[q[l]] = static_cast<std::uint8_t>(yielded[l]);
-    work[l] = lane_work[l];
+    out.work[l] = lane_work[l];
   }
+  out.sxx = s.xx;
+  out.syy = s.yy;
+  out.sxy = s.xy;
+  out.volume = m_p / rho_after;  // Particles::volume, lane by lane
+  out.mass = m_p;
 }
 
-// Adds point p's internal and body forces to its nodes, Eqs. (16), (17):
-// `sums` holds the rows of fx (low halves) and fy (high halves) at p's base
-// node, so each line below is both components at once.
-void scatter_point_force(World& w, int p, const Vec2& gravity, NodeSumsSideBySide& sums) {
-  const Particles& pts = w.points;
+// Adds the internal and body forces of point p, lane l of `u`, to its nodes,
+// Eqs. (16), (17): `sums` holds the rows of fx (low halves) and fy (high
+// halves) at p's base node, so each line below is both components at once.
+void scatter_point_force(World& w, int p, const UpdatedLanes& u, int l, const Vec2& gravity,
+                         NodeSumsSideBySide& sums) {
   const Stencil& st = w.stencils[p];
-  const double V = pts.volume(p);
-  const double sxx = pts.sxx[p], syy = pts.syy[p], sxy = pts.sxy[p];
-  const double mgx = pts.mass[p] * gravity[0], mgy = pts.mass[p] * gravity[1];
+  const double V = u.volume[l];
+  const double sxx = u.sxx[l], syy = u.syy[l], sxy = u.sxy[l];
+  const double mgx = u.mass[l] * gravity[0], mgy = u.mass[l] * gravity[1];
   const auto halves = [](double lo, double hi) { return Lane8{lo, lo, lo, lo, hi, hi, hi, hi}; };
   const Lane8 first = halves(sxx, sxy), second = halves(sxy, syy), mg = halves(mgx, mgy);
   sums.hold(w.grid.node(st.base_i, st.base_j));
@@ -168,9 +211,9 @@ double update_stress(World& w, double dt) {
     int p[8];
     const int count = std::min(8, n - first);
     for (int l = 0; l < count; ++l) p[l] = first + l;
-    double work[8];
-    update_eight_stresses(w, p, count, dt, own, cache, work);
-    for (int l = 0; l < count; ++l) total += work[l];
+    UpdatedLanes updated;
+    update_eight_stresses(w, p, count, dt, own, cache, updated);
+    for (int l = 0; l < count; ++l) total += updated.work[l];
   }
   return total;
 }
@@ -189,11 +232,11 @@ void update_stress_and_forces(World& w, const StepInput& in) {
     const int end = w.band_start[band + 1];
     for (int s = w.band_start[band]; s < end; s += 8) {
       const int count = std::min(8, end - s);
-      double work[8];
-      update_eight_stresses(w, &w.order[s], count, in.dt, own, cache, work);
+      UpdatedLanes updated;
+      update_eight_stresses(w, &w.order[s], count, in.dt, own, cache, updated);
       for (int l = 0; l < count; ++l) {
-        total += work[l];
-        scatter_point_force(w, w.order[s + l], in.gravity, forces);
+        total += updated.work[l];
+        scatter_point_force(w, w.order[s + l], updated, l, in.gravity, forces);
       }
     }
     forces.flush();
