@@ -117,6 +117,9 @@ inline double sum3(const Lane4& v) { return (v[0] + v[1]) + v[2]; }
 inline Lane8 join4(const Lane4& a, const Lane4& b) {
   return __builtin_shufflevector(a, b, 0, 1, 2, 3, 4, 5, 6, 7);
 }
+typedef double Lane2 __attribute__((vector_size(16)));
+// Lanes 2k and 2k + 1 of v.
+inline Lane2 half2(const Lane8& v, int k) { return Lane2{v[2 * k], v[2 * k + 1]}; }
 inline Lane4 low4(const Lane8& v) { return __builtin_shufflevector(v, v, 0, 1, 2, 3); }
 inline Lane4 high4(const Lane8& v) { return __builtin_shufflevector(v, v, 4, 5, 6, 7); }
 // The sums of three of both halves of four Lane8 a, b, c, d, in this order:
