@@ -135,10 +135,20 @@ void order_ties_by_scene_index(World& w) {
   const int *key = w.bin_key.data(), *scene = w.scene_index.data();
   int* order = w.order.data();
   const int first = w.band_start[r.begin], end = w.band_start[r.end];
+  if (first == end) return;
+  // The key and scene index of the point at s - 1, held from the turn before:
+  // most points come in order, and their test then reads nothing of another
+  // point. A point moved down leaves that point at s, so they hold still.
+  int last_key = key[order[first]], last_scene = scene[order[first]];
   for (int s = first + 1; s < end; ++s) {
-    const int p = order[s];
+    const int p = order[s], kp = key[p], sp = scene[p];
+    if (kp != last_key || sp > last_scene) {
+      last_key = kp;
+      last_scene = sp;
+      continue;
+    }
     int t = s;
-    for (; t > first && key[order[t - 1]] == key[p] && scene[order[t - 1]] > scene[p]; --t)
+    for (; t > first && key[order[t - 1]] == kp && scene[order[t - 1]] > sp; --t)
       order[t] = order[t - 1];
     order[t] = p;
   }
