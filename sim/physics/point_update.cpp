@@ -42,13 +42,13 @@ struct MaterialLanesCache {
                            const MohrCoulomb* own) {
     std::uint64_t now;
     std::memcpy(&now, &materials, sizeof now);
-    // Looked up from the points again, not from `materials`: taking the
-    // bytes out of the vector made the random-field case 4 ns per point slower.
     if (held && now == kinds && !own) return lanes;
     kinds = now;
     held = true;
     const MaterialConstants* m[8];
     const MohrCoulomb* s[8];
+    // Looked up from the points again, not from `materials`: taking the
+    // bytes out of the vector made the random-field case 4 ns per point slower.
     for (int l = 0; l < 8; ++l) {
       m[l] = &w.materials[w.points.material[q[l]]];
       s[l] = own ? &own[q[l]] : &m[l]->mohr_coulomb;
@@ -103,8 +103,12 @@ bool stored_in_a_run(const int q[8], int count) {
     if (q[l] != q[0] + l) return false;
   return true;
 }
-Bytes8 bytes_at(const std::uint8_t* a, const int q[8], bool run) {
-  Bytes8 v;
+// The values of eight points in array `a`, one a lane (V: Lane8 of doubles,
+// Bytes8 of bytes), and their store back, count lanes.
+template <class V, class T>
+V lanes_at(const T* a, const int q[8], bool run) {
+  static_assert(sizeof(V) == 8 * sizeof(T), "eight lanes of T");
+  V v;
   if (run) {
     std::memcpy(&v, a + q[0], sizeof v);
     return v;
@@ -112,13 +116,9 @@ Bytes8 bytes_at(const std::uint8_t* a, const int q[8], bool run) {
   for (int l = 0; l < 8; ++l) v[l] = a[q[l]];
   return v;
 }
-Lane8 lanes_at(const double* a, const int q[8], bool run) {
-  if (run) return load8(a + q[0]);
-  Lane8 v;
-  for (int l = 0; l < 8; ++l) v[l] = a[q[l]];
-  return v;
-}
-void store_lanes(double* a, const int q[8], int count, bool run, const Lane8& v) {
+template <class T, class V>
+void store_lanes(T* a, const int q[8], int count, bool run, const V& v) {
+  static_assert(sizeof(V) == 8 * sizeof(T), "eight lanes of T");
   if (run) {
     std::memcpy(a + q[0], &v, sizeof v);
     return;
@@ -153,13 +153,16 @@ void update_eight_stresses(World& w, const int* p, int count, double dt, const M
   for (int k = 0; k < 4; ++k)
     pairs[k] = velocity_gradients(w.grid, w.stencils[q[2 * k]], w.stencils[q[2 * k + 1]]);
   gradient_lanes(pairs, L);
-  const Int8 was_yielded = __builtin_convertvector(bytes_at(pts.yielded.data(), q, run), Int8);
-  const MaterialLanes& m = cache.get(w, bytes_at(pts.material.data(), q, run), q, own);
+  const Bytes8 flags = lanes_at<Bytes8>(pts.yielded.data(), q, run);
+  const Int8 was_yielded = __builtin_convertvector(flags, Int8);
+  const MaterialLanes& m = cache.get(w, lanes_at<Bytes8>(pts.material.data(), q, run), q, own);
   const Lane8 &Lxx = L[0], &Lxy = L[1], &Lyx = L[2], &Lyy = L[3];
   const StrainOf<Lane8> de{dt * Lxx, dt * Lyy, 0.5 * dt * (Lxy + Lyx)};  // Eq. (31)
-  const StressOf<Lane8> before{lanes_at(pts.sxx.data(), q, run), lanes_at(pts.syy.data(), q, run),
-                               lanes_at(pts.sxy.data(), q, run), lanes_at(pts.szz.data(), q, run)};
-  const Lane8 m_p = lanes_at(pts.mass.data(), q, run), rho = lanes_at(pts.density.data(), q, run);
+  const StressOf<Lane8> before{
+      lanes_at<Lane8>(pts.sxx.data(), q, run), lanes_at<Lane8>(pts.syy.data(), q, run),
+      lanes_at<Lane8>(pts.sxy.data(), q, run), lanes_at<Lane8>(pts.szz.data(), q, run)};
+  const Lane8 m_p = lanes_at<Lane8>(pts.mass.data(), q, run);
+  const Lane8 rho = lanes_at<Lane8>(pts.density.data(), q, run);
   const Lane8 volume = m_p / rho;  // at the start of the step
   StressOf<Lane8> s = before;
   jaumann_rotate(s, 0.5 * dt * (Lxy - Lyx));  // Eq. (24)
@@ -186,11 +189,7 @@ void update_eight_stresses(World& w, const int* p, int count, double dt, const M
   store_lanes(pts.sxy.data(), q, count, run, s.xy);
   store_lanes(pts.szz.data(), q, count, run, s.zz);
   store_lanes(pts.density.data(), q, count, run, rho_after);
-  const Bytes8 yield_flags = __builtin_convertvector(yielded, Bytes8);
-  if (run)
-    std::memcpy(&pts.yielded[q[0]], &yield_flags, sizeof yield_flags);
-  else
-    for (int l = 0; l < count; ++l) pts.yielded[q[l]] = yield_flags[l];
+  store_lanes(pts.yielded.data(), q, count, run, __builtin_convertvector(yielded, Bytes8));
   for (int l = 0; l < count; ++l) out.work[l] = lane_work[l];
   out.sxx = s.xx;
   out.syy = s.yy;
