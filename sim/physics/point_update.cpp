@@ -131,7 +131,7 @@ void store_lanes(T* a, const int q[8], int count, bool run, const V& v) {
 // and their mass, so the scatter reloads nothing and divides nothing.
 struct UpdatedLanes {
   Lane8 sxx, syy, sxy, volume, mass;
-  double work[8];  // each point's stress work over the step (Eq. 3)
+  Lane8 work;  // each point's stress work over the step (Eq. 3)
 };
 
 // The stress update of points p[0..count), count <= 8, eight at a time
@@ -182,15 +182,14 @@ void update_eight_stresses(World& w, const int* p, int count, double dt, const M
   // (Dunatunga & Kamrin 2015): it counts as yielded, flowing freely.
   yielded = disconnect_below_critical_density(rho_after, m, s) ? Int8{} + 1 : yielded;
   // Stress power of Eq. (3) over the step, midpoint stress.
-  const Lane8 lane_work = volume * 0.5 * ((before.xx + s.xx) * de.xx + (before.yy + s.yy) * de.yy +
-                                          2.0 * (before.xy + s.xy) * de.xy);
+  out.work = volume * 0.5 * ((before.xx + s.xx) * de.xx + (before.yy + s.yy) * de.yy +
+                             2.0 * (before.xy + s.xy) * de.xy);
   store_lanes(pts.sxx.data(), q, count, run, s.xx);
   store_lanes(pts.syy.data(), q, count, run, s.yy);
   store_lanes(pts.sxy.data(), q, count, run, s.xy);
   store_lanes(pts.szz.data(), q, count, run, s.zz);
   store_lanes(pts.density.data(), q, count, run, rho_after);
   store_lanes(pts.yielded.data(), q, count, run, __builtin_convertvector(yielded, Bytes8));
-  for (int l = 0; l < count; ++l) out.work[l] = lane_work[l];
   out.sxx = s.xx;
   out.syy = s.yy;
   out.sxy = s.xy;
