@@ -2,7 +2,7 @@
 //
 // The points are sorted into bands of kBandRows base-node rows (see
 // locate.cpp). Each thread owns a contiguous run of bands, chosen so the
-// threads hold about equal numbers of points (partition_bands), and every
+// threads take about equal time (partition_bands), and every
 // phase of the step hands a thread the same points and the same node rows. What a
 // thread writes in one phase it reads in the next from its own cache: with
 // phases that handed points out in other ways (chunks of the point index,
@@ -19,6 +19,8 @@
 #include <sched.h>
 
 #include <algorithm>
+#include <chrono>
+#include <cstdlib>
 
 #include "sim/physics/world.hpp"
 
@@ -46,42 +48,103 @@ inline long parity_points(const World& w, int first, int end, int parity) {
   return n;
 }
 
-// The time of a scatter phase, in points: each parity takes as long as its
-// busiest thread (the threads meet at a barrier after each).
-inline long scatter_cost(const World& w) {
-  long cost = 0;
+// The threads' pace. This machine's two cores differ at times: pinned to
+// one, a step took 1.4 times as long per point as on the other
+// (bench/README.md), and a split by equal points then leaves the faster
+// thread waiting at every barrier. So each thread times its work in the band
+// phases, less its waits for marks (WorkClock), and the next split gives it
+// points in inverse proportion to its seconds per point, smoothed over about
+// 1 / kPaceWeight steps: one step's time is too noisy to split by (a split
+// by the last step's seconds per band ran slower, bench/README.md). A step
+// counts for at most kPaceJump times or 1 / kPaceJump of the pace so far: a
+// thread taken off its core for a scheduler slice mid-step must not hand
+// its partner most of the points for the next steps.
+constexpr double kPaceWeight = 0.125;
+constexpr double kPaceJump = 2.0;
+
+// Folds the last step's times into each thread's pace; a new team size
+// starts afresh, split by points alone.
+inline void update_pace(World& w, int threads) {
+  if (w.thread_pace.size() != static_cast<std::size_t>(threads)) {
+    w.thread_pace.assign(static_cast<std::size_t>(threads), ThreadPace{});
+    return;
+  }
+  bool measured = true;
+  for (ThreadPace& p : w.thread_pace) {
+    if (p.points > 0 && p.worked > 0) {
+      const double now = p.worked / static_cast<double>(p.points);
+      if (p.per_point == 0) p.per_point = now;
+      const double counted = std::clamp(now, p.per_point / kPaceJump, p.per_point * kPaceJump);
+      p.per_point += kPaceWeight * (counted - p.per_point);
+    }
+    p.worked = 0;
+    measured = measured && p.per_point > 0;
+  }
+  for (ThreadPace& p : w.thread_pace) p.weight = measured ? p.per_point : 1.0;
+}
+
+// The part of the work that threads [0, t) of a team of `threads` take:
+// their shares of the speed (1 / weight), equal shares on a team the paces
+// are not for. Every thread computes the same figure.
+inline double share_below(const World& w, int t, int threads) {
+  if (t >= threads) return 1.0;
+  if (w.thread_pace.size() != static_cast<std::size_t>(threads)) return static_cast<double>(t) / threads;
+  double below = 0, all = 0;
+  for (int u = 0; u < threads; ++u) {
+    all += 1.0 / w.thread_pace[u].weight;
+    if (u < t) below += 1.0 / w.thread_pace[u].weight;
+  }
+  return below / all;
+}
+
+// The time of a scatter phase: each parity takes as long as its busiest
+// thread (the threads meet at a barrier after each), a thread's time being
+// its points times its weight.
+inline double scatter_cost(const World& w) {
+  double cost = 0;
   for (int parity = 0; parity < 2; ++parity) {
-    long busiest = 0;
+    double busiest = 0;
     for (std::size_t t = 0; t + 1 < w.thread_bands.size(); ++t)
-      busiest = std::max(busiest, parity_points(w, w.thread_bands[t], w.thread_bands[t + 1], parity));
+      busiest = std::max(busiest, w.thread_pace[t].weight *
+                                      parity_points(w, w.thread_bands[t], w.thread_bands[t + 1], parity));
     cost += busiest;
   }
   return cost;
 }
 
-// Splits the bands among `threads` threads: first about equal points each,
-// then each boundary moves by a band or two while that shortens the scatter
-// phases (scatter_cost). Equal totals can hide a thread with most of its
-// points in even bands: it works on while the other waits at the barrier.
+// Splits the bands among `threads` threads: first the points by the threads'
+// paces, then each boundary moves by up to kParityMoves bands while that
+// shortens the scatter phases (scatter_cost). Equal totals can hide a thread
+// with most of its points in even bands: it works on while the other waits at
+// the barrier. Moves further off cannot be judged by the scatters alone:
+// with one thread three times the other's pace and no bound on the moves,
+// the 8,000-point slope's split went to 93 : 7 instead of 75 : 25, a split
+// the phases without parity (locate, G2P) would pay for.
+constexpr int kParityMoves = 2;
+
 inline void partition_bands(World& w, int threads) {
+  update_pace(w, threads);
   const int bands = static_cast<int>(w.band_start.size()) - 1;
   const long points = w.band_start[bands];
   w.thread_bands.assign(static_cast<std::size_t>(threads) + 1, bands);
   w.thread_bands[0] = 0;
   int b = 0;
   for (int t = 1; t < threads; ++t) {
-    while (b < bands && static_cast<long>(w.band_start[b]) * threads < points * t) ++b;
+    const double below = share_below(w, t, threads) * static_cast<double>(points);
+    while (b < bands && w.band_start[b] < below) ++b;
     w.thread_bands[t] = b;
   }
-  long cost = scatter_cost(w);
+  for (int t = 0; t < threads; ++t) w.thread_pace[t].first_band_by_pace = w.thread_bands[t];
+  double cost = scatter_cost(w);
   for (bool better = true; better;) {
     better = false;
     for (int t = 1; t < threads; ++t) {
       for (const int move : {-2, -1, 1, 2}) {
         const int was = w.thread_bands[t], to = was + move;
         if (to < w.thread_bands[t - 1] || to > w.thread_bands[t + 1]) continue;
+        if (std::abs(to - w.thread_pace[t].first_band_by_pace) > kParityMoves) continue;
         w.thread_bands[t] = to;
-        const long c = scatter_cost(w);
+        const double c = scatter_cost(w);
         if (c < cost) {
           cost = c;
           better = true;
@@ -91,6 +154,8 @@ inline void partition_bands(World& w, int threads) {
       }
     }
   }
+  for (int t = 0; t < threads; ++t)
+    w.thread_pace[t].points = w.band_start[w.thread_bands[t + 1]] - w.band_start[w.thread_bands[t]];
 }
 
 // The node rows [first, last) the calling thread resets and updates: band b
@@ -142,6 +207,34 @@ inline void mark_band(World& w, int b, long epoch) {
   w.band_done[b].epoch.store(epoch, std::memory_order_release);
 }
 
+// Times the calling thread's work in one band phase into its pace, less the
+// waits for marks, until finish(). Not on a team of one, nor on a team whose
+// bands were not split by partition_bands (tests that set them).
+class WorkClock {
+ public:
+  explicit WorkClock(World& w) {
+    const int t = omp_get_thread_num();
+    if (omp_get_num_threads() > 1 && static_cast<std::size_t>(t) < w.thread_pace.size()) {
+      pace_ = &w.thread_pace[t];
+      since_ = Clock::now();
+    }
+  }
+  void wait_for(const World& w, int b, long epoch) {
+    if (has_mark(w, b, epoch)) return;
+    finish();
+    wait_for_mark(w, b, epoch);
+    if (pace_) since_ = Clock::now();
+  }
+  void finish() {
+    if (pace_) pace_->worked += std::chrono::duration<double>(Clock::now() - since_).count();
+  }
+
+ private:
+  using Clock = std::chrono::steady_clock;
+  ThreadPace* pace_ = nullptr;
+  Clock::time_point since_{};
+};
+
 // Marks each of the calling thread's bands.
 inline void mark_own_bands(World& w, BandMark m) {
   const BandRange r = own_bands(w);
@@ -160,9 +253,11 @@ template <class Visit>
 void gather_own_bands(World& w, Visit visit) {
   const BandRange r = own_bands(w);
   if (r.begin == r.end) return;
+  WorkClock clock(w);
   for (int b = r.begin; b + 1 < r.end; ++b) visit(b);
-  wait_for_mark(w, r.end, mark_epoch(w, BandMark::NodalUpdate));
+  clock.wait_for(w, r.end, mark_epoch(w, BandMark::NodalUpdate));
   visit(r.end - 1);
+  clock.finish();
 }
 
 // For visits that add to grid nodes: even bands first, then odd bands. Two
@@ -178,18 +273,20 @@ template <class Visit>
 void scatter_own_bands(World& w, BandMark which, Visit visit) {
   const BandRange r = own_bands(w);
   const long epoch = mark_epoch(w, which);
+  WorkClock clock(w);
   for (int b = r.begin + (r.begin & 1); b < r.end; b += 2) {
     visit(b);
     mark_band(w, b, epoch);
   }
   const auto when_ready = [&](int b) {
-    wait_for_mark(w, b - 1, epoch);
-    wait_for_mark(w, b + 1, epoch);
+    clock.wait_for(w, b - 1, epoch);
+    clock.wait_for(w, b + 1, epoch);
     visit(b);
   };
   const int lowest = r.begin + !(r.begin & 1);
   for (int b = lowest + 2; b < r.end; b += 2) when_ready(b);
   if (lowest < r.end) when_ready(lowest);
+  clock.finish();
 #pragma omp barrier
 }
 

@@ -264,9 +264,11 @@ bool locate_and_sort(World& w) {
   const int t = omp_get_thread_num(), threads = omp_get_num_threads();
   const int n = static_cast<int>(w.points.size());
   // Each thread takes a run of whole Lane8 blocks in index order, for the
-  // stencils and for both passes of the counting sort.
+  // stencils and for both passes of the counting sort: its share of the
+  // points by its pace (bands.hpp), equal shares on a new team.
   const int blocks = (n + 7) / 8;
-  const int first_block = blocks * t / threads, end_block = blocks * (t + 1) / threads;
+  const auto block_below = [&](int u) { return static_cast<int>(share_below(w, u, threads) * blocks + 0.5); };
+  const int first_block = block_below(t), end_block = block_below(t + 1);
   const int lo = std::min(n, 8 * first_block), hi = std::min(n, 8 * end_block);
   int* window = &w.thread_window[static_cast<std::size_t>(t) * kWindowInts];
   compute_stencils(w, first_block, end_block, counts_of(w, t), window);

@@ -37,6 +37,16 @@ struct BandDone {
   }
 };
 
+// One thread's pace (sim/physics/bands.hpp), on a cache line of its own:
+// each thread adds to its `worked` while the others add to theirs.
+struct alignas(64) ThreadPace {
+  double worked = 0;     // seconds of work in the band phases since the last split
+  long points = 0;       // points the last split gave it
+  double per_point = 0;  // smoothed seconds per point; 0 until measured
+  double weight = 1;     // what the split reads: per_point once every thread has one, else 1
+  int first_band_by_pace = 0;  // where the pace alone would start its bands (partition_bands)
+};
+
 struct World {
   Particles points;
   Grid grid;
@@ -62,6 +72,7 @@ struct World {
   int bins = 0, bin_i0 = 0, bin_j0 = 0, bin_width = 0;
   int bad_point = 0;              // scene index of the first point off the grid (the number of points if none)
   std::vector<int> thread_bands;  // thread t owns bands [thread_bands[t], thread_bands[t+1])
+  std::vector<ThreadPace> thread_pace;  // per thread of the team: what sets its share (bands.hpp)
   std::vector<BandDone> band_done;  // per band: its last mark (bands.hpp)
   long step_serial = 0;           // steps located so far (prepare_locate)
   std::vector<double> band_sums;  // per band partial sums of the step's reductions

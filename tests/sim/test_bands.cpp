@@ -135,3 +135,35 @@ TEST(Bands, HighestBandWaitsForTheRowsAboveToBeUpdated) {
   for (int b = 0; b < 9; ++b) ASSERT_GE(log[b].start, 0) << "band " << b << " was not visited";
   EXPECT_GT(log[3].start, updated[1]) << "band 3 read rows the thread above had not updated";
 }
+
+// The split follows each thread's seconds per point (bands.hpp): a new team
+// splits by points, a step's times fold into each thread's smoothed pace,
+// and a thread three times as slow per point gets about a quarter of them.
+TEST(Bands, SplitFollowsTheThreadsPace) {
+  sim::World w;
+  for (int b = 0; b <= 40; ++b) w.band_start.push_back(10 * b);  // 40 bands of 10 points
+  w.band_done.resize(40);
+  sim::partition_bands(w, 2);
+  EXPECT_EQ(w.thread_bands, (std::vector<int>{0, 20, 40}));
+  const auto step_took = [&](double per_point0, double per_point1) {
+    w.thread_pace[0].worked = per_point0 * w.thread_pace[0].points;
+    w.thread_pace[1].worked = per_point1 * w.thread_pace[1].points;
+    sim::partition_bands(w, 2);
+  };
+  step_took(3e-8, 1e-8);
+  EXPECT_DOUBLE_EQ(w.thread_pace[0].per_point, 3e-8);
+  EXPECT_DOUBLE_EQ(w.thread_pace[1].per_point, 1e-8);
+  EXPECT_GE(w.thread_bands[1], 8);
+  EXPECT_LE(w.thread_bands[1], 12);
+  EXPECT_EQ(w.thread_pace[0].points, 10 * w.thread_bands[1]);
+  EXPECT_EQ(w.thread_pace[0].worked, 0.0) << "a step's time counted twice";
+  step_took(2e-8, 1e-8);  // one step moves the pace by kPaceWeight of the change only
+  EXPECT_DOUBLE_EQ(w.thread_pace[0].per_point, 3e-8 + sim::kPaceWeight * (2e-8 - 3e-8));
+  EXPECT_LT(w.thread_bands[1], 20);
+  const double before = w.thread_pace[1].per_point;
+  step_took(1e-8, 1e-6);  // thread 1 held off its core: counted as kPaceJump times its pace
+  EXPECT_DOUBLE_EQ(w.thread_pace[1].per_point, before + sim::kPaceWeight * (sim::kPaceJump - 1) * before);
+  sim::partition_bands(w, 3);  // a new team size forgets the pace
+  for (const sim::ThreadPace& p : w.thread_pace) EXPECT_EQ(p.per_point, 0.0);
+  EXPECT_EQ(w.thread_pace[0].points + w.thread_pace[1].points + w.thread_pace[2].points, 400);
+}
