@@ -51,11 +51,14 @@ inline long parity_points(const World& w, int first, int end, int parity) {
 // The threads' pace. This machine's two cores differ at times: pinned to
 // one, a step took 1.4 times as long per point as on the other
 // (bench/README.md), and a split by equal points then leaves the faster
-// thread waiting at every barrier. So each thread times its work in the band
-// phases, less its waits for marks (WorkClock), and the next split gives it
+// thread waiting at every barrier. So each thread times its work in every
+// phase the split shares out (the stencils, the grid rows, the band phases),
+// less its waits for marks (WorkClock), and the next split gives it
 // points in inverse proportion to its seconds per point, smoothed over about
 // 1 / kPaceWeight steps: one step's time is too noisy to split by (a split
-// by the last step's seconds per band ran slower, bench/README.md). A step
+// by the last step's seconds per band ran slower, bench/README.md). Its
+// grid rows are timed too, though they are not points: a thread that holds
+// the air above a slope then takes fewer points. A step
 // counts for at most kPaceJump times or 1 / kPaceJump of the pace so far: a
 // thread taken off its core for a scheduler slice mid-step must not hand
 // its partner most of the points for the next steps.
@@ -207,7 +210,7 @@ inline void mark_band(World& w, int b, long epoch) {
   w.band_done[b].epoch.store(epoch, std::memory_order_release);
 }
 
-// Times the calling thread's work in one band phase into its pace, less the
+// Times the calling thread's work in one phase into its pace, less the
 // waits for marks, until finish(). Not on a team of one, nor on a team whose
 // bands were not split by partition_bands (tests that set them).
 class WorkClock {

@@ -271,7 +271,9 @@ bool locate_and_sort(World& w) {
   const int first_block = block_below(t), end_block = block_below(t + 1);
   const int lo = std::min(n, 8 * first_block), hi = std::min(n, 8 * end_block);
   int* window = &w.thread_window[static_cast<std::size_t>(t) * kWindowInts];
+  WorkClock clock(w);
   compute_stencils(w, first_block, end_block, counts_of(w, t), window);
+  clock.finish();
 #pragma omp barrier
   if (counted_in_bins(w, threads)) {
     // The prefix's first part reads only the counts; its barrier puts the

@@ -42,6 +42,7 @@ void step(World& w, const StepInput& in, StepReport& report) {
 }
 
 void reset_grid(World& w) {
+  WorkClock clock(w);
   Grid& g = w.grid;
   int first, last;
   own_rows(w, first, last);
@@ -52,6 +53,7 @@ void reset_grid(World& w) {
     }
   }
   if (!g.friction_walls.empty()) reset_wall_gaps(g, first, last);
+  clock.finish();
 }
 
 void points_to_grid(World& w) {
@@ -84,6 +86,7 @@ void points_to_grid(World& w) {
 // against a wall would never come to rest. The kinetic energy taken goes to
 // row_sums, row by row. Friction walls act after the holds.
 void enforce_walls_on_momentum(World& w) {
+  WorkClock clock(w);
   Grid& g = w.grid;
   int first, last;
   own_rows(w, first, last);
@@ -107,6 +110,7 @@ void enforce_walls_on_momentum(World& w) {
     sums[kRowWallChangeOnGrid] = removed;
   }
   if (!g.friction_walls.empty()) friction_walls_on_momentum(g, first, last);
+  clock.finish();
 }
 
 // Eq. (28): p_i^{k+1} = p_i^k + dt f_i. Walls take the force normal to them;
@@ -114,6 +118,7 @@ void enforce_walls_on_momentum(World& w) {
 // The nodal acceleration handed to the points (Eq. 30) is the whole velocity
 // change of the step: force plus what the wall took away.
 void update_nodal_momentum(World& w, double dt) {
+  WorkClock clock(w);
   Grid& g = w.grid;
   const double inv_dt = 1.0 / dt;
   int first, last;
@@ -136,6 +141,7 @@ void update_nodal_momentum(World& w, double dt) {
   }
   if (!g.friction_walls.empty()) friction_walls_on_update(g, first, last, dt);
   if (w.transfer == TransferScheme::Apic) grid_kinetic_by_row(g, first, last, kRowGridKineticUpdated);
+  clock.finish();
   mark_own_bands(w, BandMark::NodalUpdate);
 }
 

@@ -40,7 +40,7 @@ struct BandDone {
 // One thread's pace (sim/physics/bands.hpp), on a cache line of its own:
 // each thread adds to its `worked` while the others add to theirs.
 struct alignas(64) ThreadPace {
-  double worked = 0;     // seconds of work in the band phases since the last split
+  double worked = 0;     // seconds of work in the split's phases since the last split
   long points = 0;       // points the last split gave it
   double per_point = 0;  // smoothed seconds per point; 0 until measured
   double weight = 1;     // what the split reads: per_point once every thread has one, else 1
