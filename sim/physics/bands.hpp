@@ -52,16 +52,15 @@ inline long parity_points(const World& w, int first, int end, int parity) {
 // one, a step took 1.4 times as long per point as on the other
 // (bench/README.md), and a split by equal points then leaves the faster
 // thread waiting at every barrier. So each thread times its work in every
-// phase the split shares out (the stencils, the grid rows, the band phases),
-// less its waits for marks (WorkClock), and the next split gives it
-// points in inverse proportion to its seconds per point, smoothed over about
-// 1 / kPaceWeight steps: one step's time is too noisy to split by (a split
-// by the last step's seconds per band ran slower, bench/README.md). Its
-// grid rows are timed too, though they are not points: a thread that holds
-// the air above a slope then takes fewer points. A step
-// counts for at most kPaceJump times or 1 / kPaceJump of the pace so far: a
-// thread taken off its core for a scheduler slice mid-step must not hand
-// its partner most of the points for the next steps.
+// phase the split shares out, less its waits for marks (WorkClock), and the
+// next split gives it points in inverse proportion to its seconds per point.
+// The grid rows count though they are not points: a thread that holds the
+// air above a slope takes fewer points. The pace is smoothed over about
+// 1 / kPaceWeight steps, as one step's time is too noisy to split by (a split
+// by the last step's seconds per band ran slower, bench/README.md), and a
+// step counts for at most kPaceJump times or 1 / kPaceJump of the pace so
+// far: a thread taken off its core for a scheduler slice mid-step must not
+// hand its partner most of the points for the next steps.
 constexpr double kPaceWeight = 0.125;
 constexpr double kPaceJump = 2.0;
 
