@@ -55,9 +55,7 @@ SplitRun steps_with_pace(int threads, double slower) {
   sim::Scenario s = sim::load_scenario(LANDSLIDE_SOURCE_DIR "/scenarios/paper-slope-phi20.json");
   sim::World w = sim::make_world(s);
   sim::StepInput in;
-  double signal = 0;
-  for (const auto& m : w.materials) signal = std::max(signal, m.wave_speed);
-  in.dt = s.time_step.courant * s.cell_size / signal;
+  in.dt = s.time_step.courant * s.cell_size / sim::max_signal_speed(w);  // the points are at rest
   in.gravity = s.gravity;
   sim::follow_free_cores(false);
   omp_set_num_threads(threads);
