@@ -35,7 +35,7 @@ void points_to_grid_apic(World& w) {
       for (int b = 0; b < 3; ++b) {
         const int row = g.node(st.base_i, st.base_j + b);
         const double dy = row_offset(g, st, b, pts.y[p]);
-        const Lane4 mS = lanes3(st.wx) * st.wy[b] * m;
+        const Lane4 mS = x_weights(st) * st.wy[b] * m;
         store4(&g.mass[row], load4(&g.mass[row]) + mS);
         store4(&g.px[row], load4(&g.px[row]) + mS * (vx + pts.cxx[p] * dx + pts.cxy[p] * dy));
         store4(&g.py[row], load4(&g.py[row]) + mS * (vy + pts.cyx[p] * dx + pts.cyy[p] * dy));
@@ -60,7 +60,7 @@ void grid_to_points_apic(World& w, const StepInput& in) {
       for (int b = 0; b < 3; ++b) {
         const int row = g.node(st.base_i, st.base_j + b);
         const double dy = row_offset(g, st, b, pts.y[p]);
-        const Lane4 S = lanes3(st.wx) * st.wy[b];
+        const Lane4 S = x_weights(st) * st.wy[b];
         const Lane4 vx = S * load4(&g.vx[row]), vy = S * load4(&g.vy[row]);
         svx += vx;
         svy += vy;
@@ -70,7 +70,7 @@ void grid_to_points_apic(World& w, const StepInput& in) {
         byy += sum3(vy) * dy;
         dyy += st.wy[b] * dy * dy;
       }
-      const double dxx = sum3(lanes3(st.wx) * dx * dx);
+      const double dxx = sum3(x_weights(st) * dx * dx);
       const double vx = sum3(svx), vy = sum3(svy);
       pts.cxx[p] = keep * sum3(bxx) / dxx;
       pts.cyx[p] = keep * sum3(byx) / dxx;

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <cstring>
 
@@ -144,17 +145,37 @@ inline Lane8 load4x2(const double* nodes, int row_a, int row_c) {
 
 // One particle's 3x3 stencil: nodes (base_i + a, base_j + b), a, b in 0..2.
 // The phases read a stencil row as one vector operation on three
-// neighbouring nodes of a grid row: lanes3 puts the x weights in lanes 0..2
-// of a Lane4 with lane 3 at 0 (the grid keeps a spare node at the end of
-// every row for lane 3, see grid.hpp). Stored as plain doubles, 104 B
-// instead of the 128 B that two aligned Lane4 members took (issue 17).
+// neighbouring nodes of a grid row: x_weights and x_slopes put the x
+// weights or derivatives in lanes 0..2 of a Lane4 with lane 3 at 0 (the grid
+// keeps a spare node at the end of every row for lane 3, see grid.hpp).
+// Stored as plain doubles, 104 B instead of the 128 B that two aligned Lane4
+// members took (issue 17).
 struct Stencil {
   double wx[3], dx[3];  // 1D weights and derivatives along x
   double wy[3], dy[3];  // along y
   int base_i = 0, base_j = 0;
 };
 
-inline Lane4 lanes3(const double v[3]) { return Lane4{v[0], v[1], v[2], 0.0}; }
+typedef std::int64_t Int4 __attribute__((vector_size(32)));
+
+// Three doubles of a stencil from byte `at` and a +0.0 lane, from one load
+// of four and a mask: the fourth double read is the next member's (dx[0]
+// after wx, wy[0] after dx), read as part of the Stencil's bytes. Built lane
+// by lane, g++ took three loads and an insert for each row (issue 17,
+// thirteenth pass); the lanes are the same bits either way.
+inline Lane4 first_three(const Stencil& st, std::size_t at) {
+  static_assert(offsetof(Stencil, dx) == 3 * sizeof(double) &&
+                    offsetof(Stencil, wy) == 6 * sizeof(double),
+                "wx and dx are each followed by another double of the stencil");
+  const Lane4 four = load4(reinterpret_cast<const double*>(reinterpret_cast<const char*>(&st) + at));
+  return reinterpret_cast<Lane4>(reinterpret_cast<Int4>(four) & Int4{-1, -1, -1, 0});
+}
+inline Lane4 x_weights(const Stencil& st) { return first_three(st, offsetof(Stencil, wx)); }
+inline Lane4 x_slopes(const Stencil& st) { return first_three(st, offsetof(Stencil, dx)); }
+
+// A Lane4 in both halves of a Lane8: one point's stencil row taken by a
+// vector operation of eight lanes whose two halves are two components.
+inline Lane8 twice(const Lane4& v) { return join4(v, v); }
 
 // What a scatter phase adds to N nodal arrays over the 3x3 nodes of one base
 // node (three stencil rows, each with its fourth lane), kept in registers

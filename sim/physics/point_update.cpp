@@ -69,8 +69,8 @@ Lane8 velocity_gradients(const Grid& g, const Stencil& a, const Stencil& c) {
   Lane8 lxx{}, lxy{}, lyx{}, lyy{};
   for (int b = 0; b < 3; ++b) {
     const int ra = g.node(a.base_i, a.base_j + b), rc = g.node(c.base_i, c.base_j + b);
-    const Lane8 gx = join4(lanes3(a.dx) * a.wy[b], lanes3(c.dx) * c.wy[b]);
-    const Lane8 gy = join4(lanes3(a.wx) * a.dy[b], lanes3(c.wx) * c.dy[b]);
+    const Lane8 gx = join4(x_slopes(a) * a.wy[b], x_slopes(c) * c.wy[b]);
+    const Lane8 gy = join4(x_weights(a) * a.dy[b], x_weights(c) * c.dy[b]);
     const Lane8 vx = load4x2(g.vx.data(), ra, rc);
     const Lane8 vy = load4x2(g.vy.data(), ra, rc);
     lxx += vx * gx;
@@ -208,12 +208,14 @@ void scatter_point_force(World& w, int p, const UpdatedLanes& u, int l, const Ve
   const double mgx = u.mass[l] * gravity[0], mgy = u.mass[l] * gravity[1];
   const auto halves = [](double lo, double hi) { return Lane8{lo, lo, lo, lo, hi, hi, hi, hi}; };
   const Lane8 first = halves(sxx, sxy), second = halves(sxy, syy), mg = halves(mgx, mgy);
+  // The x rows in both halves once a point, not each product joined a row.
+  const Lane8 wx = twice(x_weights(st)), dx = twice(x_slopes(st));
   sums.hold(w.grid.node(st.base_i, st.base_j));
   for (int b = 0; b < 3; ++b) {
-    const Lane4 S = lanes3(st.wx) * st.wy[b];
-    const Lane4 gx = lanes3(st.dx) * st.wy[b], gy = lanes3(st.wx) * st.dy[b];  // grad S_ip
+    const Lane8 S = wx * st.wy[b];
+    const Lane8 gx = dx * st.wy[b], gy = wx * st.dy[b];  // grad S_ip
     // f_int = -sigma_p . grad S_ip V_p, Eq. (16); f_ext = m_p b S_ip, Eq. (17).
-    sums.rows[b] += -V * (first * join4(gx, gx) + second * join4(gy, gy)) + join4(S, S) * mg;
+    sums.rows[b] += -V * (first * gx + second * gy) + S * mg;
   }
 }
 
@@ -223,7 +225,7 @@ double walled_squared(const Grid& g, const Stencil& st) {
   Lane4 swx{}, swy{};
   for (int b = 0; b < 3; ++b) {
     const int row = g.node(st.base_i, st.base_j + b);
-    const Lane4 S = lanes3(st.wx) * st.wy[b];
+    const Lane4 S = x_weights(st) * st.wy[b];
     swx += S * load4(&g.held_ax[row]);
     swy += S * load4(&g.held_ay[row]);
   }
@@ -340,7 +342,7 @@ void grid_to_points(World& w, const StepInput& in) {
       Lane8 sums[4] = {};
       for (int b = 0; b < 3; ++b) {
         const int ra = g.node(a.base_i, a.base_j + b), rc = g.node(c.base_i, c.base_j + b);
-        const Lane8 S = join4(lanes3(a.wx) * a.wy[b], lanes3(c.wx) * c.wy[b]);
+        const Lane8 S = join4(x_weights(a) * a.wy[b], x_weights(c) * c.wy[b]);
         sums[0] += S * load4x2(g.ax.data(), ra, rc);
         sums[1] += S * load4x2(g.ay.data(), ra, rc);
         sums[2] += S * load4x2(g.vx.data(), ra, rc);

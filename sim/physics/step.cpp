@@ -67,7 +67,7 @@ void points_to_grid(World& w) {
       const double m = pts.mass[p], mvx = m * pts.vx[p], mvy = m * pts.vy[p];
       sums.hold(g.node(st.base_i, st.base_j));
       for (int b = 0; b < 3; ++b) {
-        const Lane4 S = lanes3(st.wx) * st.wy[b];  // S_ip, Eq. (12)
+        const Lane4 S = x_weights(st) * st.wy[b];  // S_ip, Eq. (12)
         sums.rows[0][b] += S * m;                  // Eq. (26)
         sums.rows[1][b] += S * mvx;                // Eq. (27)
         sums.rows[2][b] += S * mvy;
