@@ -100,4 +100,27 @@ TEST(GimpWeights, StencilMatchesTheWeightAtEveryNode) {
   }
 }
 
+// x_weights and x_slopes read four doubles of the stencil: lanes 0..2 are
+// the row itself and lane 3 is +0.0, whatever the next member holds.
+TEST(GimpWeights, XRowsHoldTheRowAndAZeroFourthLane) {
+  sim::Stencil st;
+  sim::gimp_stencil(3.1, 4.7, -1.0, -1.0, sim::GimpShape(kH, kH / 4), st);
+  st.dx[0] = -1.5;  // the double after wx
+  st.wy[0] = 2.5;   // the double after dx
+  const sim::Lane4 w = sim::x_weights(st), d = sim::x_slopes(st);
+  for (int a = 0; a < 3; ++a) {
+    EXPECT_EQ(w[a], st.wx[a]);
+    EXPECT_EQ(d[a], st.dx[a]);
+  }
+  for (const double fourth : {w[3], d[3]}) {
+    EXPECT_EQ(fourth, 0.0);
+    EXPECT_FALSE(std::signbit(fourth));
+  }
+  const sim::Lane8 both = sim::twice(w);
+  for (int l = 0; l < 4; ++l) {
+    EXPECT_EQ(both[l], w[l]);
+    EXPECT_EQ(both[l + 4], w[l]);
+  }
+}
+
 }  // namespace
