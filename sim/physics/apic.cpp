@@ -24,7 +24,7 @@ double row_offset(const Grid& g, const Stencil& st, int b, double y) {
 void points_to_grid_apic(World& w) {
   const Particles& pts = w.points;
   Grid& g = w.grid;
-  scatter_own_bands(w, BandMark::Mass, [&](int band) {
+  scatter_own_bands(w, BandMark::Mass, BandMark::Reset, [&](int band) {
     double kinetic = 0;
     for (int s = w.band_start[band]; s < w.band_start[band + 1]; ++s) {
       const int p = w.order[s];

@@ -170,13 +170,15 @@ inline void own_rows(const World& w, int& first, int& last) {
   first = std::min(g.j_begin + r.begin * kBandRows, last);
 }
 
-// What a band's mark in band_done says it has finished: one of the step's
-// two scatters, or the nodal update of its node rows. The mark is
-// 4 x the step's serial number + this, an epoch nothing else takes.
-enum class BandMark { Mass = 1, Forces = 2, NodalUpdate = 3 };
+// What a band's mark in band_done says it has finished, in the order its
+// thread does them: the reset of its node rows, the mass scatter, the walls
+// on its rows, the force scatter, the nodal update of its rows. The mark is
+// 8 x the step's serial number + this, so a band's marks only grow, and a
+// mark says that every phase before it is done too.
+enum class BandMark { Reset = 1, Mass = 2, Walls = 3, Forces = 4, NodalUpdate = 5 };
 
 inline long mark_epoch(const World& w, BandMark m) {
-  return 4 * w.step_serial + static_cast<long>(m);
+  return 8 * w.step_serial + static_cast<long>(m);
 }
 
 // A thread waiting for a mark pauses this many times, then yields its core
@@ -192,10 +194,10 @@ inline void spin_pause() {
 #endif
 }
 
-// Whether band b has the mark `epoch`; a band past either end has it.
+// Whether band b has the mark `epoch` or a later one; a band past either end has it.
 inline bool has_mark(const World& w, int b, long epoch) {
   const int bands = static_cast<int>(w.band_done.size());
-  return b < 0 || b >= bands || w.band_done[b].epoch.load(std::memory_order_acquire) == epoch;
+  return b < 0 || b >= bands || w.band_done[b].epoch.load(std::memory_order_acquire) >= epoch;
 }
 
 inline void wait_for_mark(const World& w, int b, long epoch) {
@@ -270,13 +272,25 @@ void gather_own_bands(World& w, Visit visit) {
 // only its own even bands, but where its bands begin on an odd one: that one
 // waits for the thread below's last even band, and goes last. Without a
 // barrier between the parities, a thread slower on its even bands and one
-// slower on its odd bands even out (bench/README.md). Ends with a barrier.
+// slower on its odd bands even out (bench/README.md).
+//
+// No barrier before or after either: a band's points reach the two lowest
+// node rows of the band above, so an even band starts once the band above
+// carries `ready` (its rows reset, or its walls done: what the visit reads
+// or adds to there), and the thread goes on to its own rows once the band
+// below, which adds to its lowest rows, is marked done too. Only the bands
+// at a boundary between threads ever wait; a barrier made every thread wait
+// for the slowest at each of four phases. On 2 threads the 8,370-point
+// slope's `landslide run` took 4.01 s against 4.22 s with the barriers
+// (medians of 6 in turns); at 25 k and 67 k points no change showed
+// (bench/README.md, issue 17's fourteenth pass).
 template <class Visit>
-void scatter_own_bands(World& w, BandMark which, Visit visit) {
+void scatter_own_bands(World& w, BandMark which, BandMark ready, Visit visit) {
   const BandRange r = own_bands(w);
-  const long epoch = mark_epoch(w, which);
+  const long epoch = mark_epoch(w, which), ready_epoch = mark_epoch(w, ready);
   WorkClock clock(w);
   for (int b = r.begin + (r.begin & 1); b < r.end; b += 2) {
+    clock.wait_for(w, b + 1, ready_epoch);
     visit(b);
     mark_band(w, b, epoch);
   }
@@ -284,12 +298,13 @@ void scatter_own_bands(World& w, BandMark which, Visit visit) {
     clock.wait_for(w, b - 1, epoch);
     clock.wait_for(w, b + 1, epoch);
     visit(b);
+    mark_band(w, b, epoch);
   };
   const int lowest = r.begin + !(r.begin & 1);
   for (int b = lowest + 2; b < r.end; b += 2) when_ready(b);
   if (lowest < r.end) when_ready(lowest);
+  if (r.begin < r.end) clock.wait_for(w, r.begin - 1, epoch);
   clock.finish();
-#pragma omp barrier
 }
 
 }  // namespace sim

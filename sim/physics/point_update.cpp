@@ -262,7 +262,7 @@ double update_stress(World& w, double dt) {
 // in the band's order, and its work summed in that order.
 void update_stress_and_forces(World& w, const StepInput& in) {
   const MohrCoulomb* own = own_strength(w);
-  scatter_own_bands(w, BandMark::Forces, [&](int band) {
+  scatter_own_bands(w, BandMark::Forces, BandMark::Walls, [&](int band) {
     MaterialLanesCache cache;
     NodeSumsSideBySide forces{w.grid.fx.data(), w.grid.fy.data(), w.grid.stride};
     double total = 0;

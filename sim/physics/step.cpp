@@ -14,10 +14,10 @@
 namespace sim {
 
 // The whole step is one parallel region: a thread keeps its bands of points
-// and rows of nodes from phase to phase (sim/physics/bands.hpp), and the phases are
-// separated by barriers, not by starting new teams of threads; where a phase
-// needs only the bands beside its own, by marks the bands leave instead
-// (sim/physics/bands.hpp). The transfers
+// and rows of nodes from phase to phase (sim/physics/bands.hpp). Locate's
+// phases are separated by barriers; from the reset of the grid on, every
+// phase needs only the bands beside its own, and waits for the marks those
+// bands leave (sim/physics/bands.hpp) instead of for every thread. The transfers
 // are the paper's (FLIP-like increments) or APIC's (sim/physics/apic.hpp), chosen
 // once per step. The team has no more threads than there are free cores
 // (sim/physics/team.hpp).
@@ -27,11 +27,9 @@ void step(World& w, const StepInput& in, StepReport& report) {
 #pragma omp parallel num_threads(team_size(w.team))
   {
     if (locate_and_sort(w)) {  // false on every thread if a point left the grid
-      reset_grid(w);
-#pragma omp barrier
+      reset_grid(w);  // marks its bands: P2G waits for those above its own
       if (apic) points_to_grid_apic(w); else points_to_grid(w);
-      enforce_walls_on_momentum(w);
-#pragma omp barrier
+      enforce_walls_on_momentum(w);  // marks its bands: the stress phase waits for those it reads
       update_stress_and_forces(w, in);
       update_nodal_momentum(w, in.dt);  // marks its bands: G2P waits for those it reads
       if (apic) grid_to_points_apic(w, in); else grid_to_points(w, in);
@@ -54,12 +52,13 @@ void reset_grid(World& w) {
   }
   if (!g.friction_walls.empty()) reset_wall_gaps(g, first, last);
   clock.finish();
+  mark_own_bands(w, BandMark::Reset);
 }
 
 void points_to_grid(World& w) {
   const Particles& pts = w.points;
   Grid& g = w.grid;
-  scatter_own_bands(w, BandMark::Mass, [&](int band) {
+  scatter_own_bands(w, BandMark::Mass, BandMark::Reset, [&](int band) {
     NodeSums<3> sums{{g.mass.data(), g.px.data(), g.py.data()}, g.stride};
     for (int s = w.band_start[band]; s < w.band_start[band + 1]; ++s) {
       const int p = w.order[s];
@@ -111,6 +110,7 @@ void enforce_walls_on_momentum(World& w) {
   }
   if (!g.friction_walls.empty()) friction_walls_on_momentum(g, first, last);
   clock.finish();
+  mark_own_bands(w, BandMark::Walls);
 }
 
 // Eq. (28): p_i^{k+1} = p_i^k + dt f_i. Walls take the force normal to them;

@@ -36,6 +36,13 @@ void spin_for(std::chrono::microseconds d) {
   }
 }
 
+// The mark a scatter waits for in the band above before it adds to that
+// band's rows (step.cpp): the rows reset for the mass, the walls done for
+// the forces.
+sim::BandMark ready_for(sim::BandMark which) {
+  return which == sim::BandMark::Mass ? sim::BandMark::Reset : sim::BandMark::Walls;
+}
+
 // One scatter on starts.size() - 1 threads. The last even band below each
 // thread boundary is slow, so the odd band just above it is ready last.
 std::vector<Visit> scatter_log(sim::World& w, sim::BandMark which, int& team) {
@@ -46,7 +53,8 @@ std::vector<Visit> scatter_log(sim::World& w, sim::BandMark which, int& team) {
   {
 #pragma omp single
     team = omp_get_num_threads();
-    sim::scatter_own_bands(w, which, [&](int b) {
+    sim::mark_own_bands(w, ready_for(which));
+    sim::scatter_own_bands(w, which, ready_for(which), [&](int b) {
       log[b].start = clock++;
       log[b].thread = omp_get_thread_num();
       bool slow = false;
@@ -109,13 +117,13 @@ TEST(Bands, OneThreadVisitsEveryBandEvenThenOdd) {
 
 }  // namespace
 
-// After the nodal update no barrier either: a thread's highest band reads the
-// two lowest node rows of the band above, so it goes once the thread above
-// has marked its rows updated; the thread's other bands need only its own.
-TEST(Bands, HighestBandWaitsForTheRowsAboveToBeUpdated) {
-  sim::World w = banded_world({0, 4, 9});
-  std::vector<Visit> log(9);
-  long updated[2] = {-1, -1};  // when each thread marked its rows
+// On two threads: thread 1 marks its bands `mark` 3 ms late, thread 0 at
+// once, and then each runs `phase` (a scatter or the gather), which logs the
+// start of each band's visit. `marked[t]`: when thread t marked its bands.
+// Returns false where no team of two threads was had.
+template <class Phase>
+bool late_mark_log(sim::World& w, sim::BandMark mark, Phase phase, std::vector<Visit>& log,
+                   long marked[2]) {
   std::atomic<long> clock{0};
   int team = 0;
 #pragma omp parallel num_threads(2)
@@ -123,16 +131,72 @@ TEST(Bands, HighestBandWaitsForTheRowsAboveToBeUpdated) {
 #pragma omp single
     team = omp_get_num_threads();
     const int t = omp_get_thread_num();
-    if (t == 1) spin_for(std::chrono::microseconds(3000));  // a late nodal update
-    updated[t] = clock++;
-    sim::mark_own_bands(w, sim::BandMark::NodalUpdate);
-    sim::gather_own_bands(w, [&](int b) {
+    if (t == 1) spin_for(std::chrono::microseconds(3000));
+    marked[t] = clock++;
+    sim::mark_own_bands(w, mark);
+    phase([&](int b) {
       log[b].start = clock++;
       log[b].thread = t;
     });
   }
-  if (team != 2) GTEST_SKIP() << "no team of 2 threads";
-  for (int b = 0; b < 9; ++b) ASSERT_GE(log[b].start, 0) << "band " << b << " was not visited";
+  for (std::size_t b = 0; b < log.size(); ++b)
+    EXPECT_GE(log[b].start, 0) << "band " << b << " was not visited";
+  return team == 2;
+}
+
+// No barrier before a scatter: the band below a thread boundary adds to the
+// two lowest rows of the band above, so it starts only once the thread above
+// has marked those rows ready (reset, for the mass), however late that is.
+TEST(Bands, ScatterWaitsForTheRowsAboveToBeReady) {
+  sim::World w = banded_world({0, 5, 9});  // thread 0's highest band, 4, is even
+  std::vector<Visit> log(9);
+  long reset[2] = {-1, -1};
+  const auto scatter = [&](auto visit) {
+    sim::scatter_own_bands(w, sim::BandMark::Mass, sim::BandMark::Reset, visit);
+  };
+  if (!late_mark_log(w, sim::BandMark::Reset, scatter, log, reset)) GTEST_SKIP() << "no team of 2 threads";
+  EXPECT_GT(log[4].start, reset[1]) << "band 4 added to rows the thread above had not reset";
+}
+
+// Nor after one: a thread leaves the scatter for the next phase on its own
+// rows (walls, nodal update) only once the band below its lowest, which adds
+// to its lowest rows, has finished, however slow that band is.
+TEST(Bands, ScatterEndsOnceTheBandBelowIsDone) {
+  for (const int boundary : {4, 5}) {  // the thread above begins on an even band, an odd one
+    sim::World w = banded_world({0, boundary, 9});
+    std::vector<Visit> log(9);
+    long left[2] = {-1, -1};  // when each thread left the scatter
+    std::atomic<long> clock{0};
+    int team = 0;
+#pragma omp parallel num_threads(2)
+    {
+#pragma omp single
+      team = omp_get_num_threads();
+      const int t = omp_get_thread_num();
+      sim::mark_own_bands(w, sim::BandMark::Walls);
+      sim::scatter_own_bands(w, sim::BandMark::Forces, sim::BandMark::Walls, [&](int b) {
+        log[b].start = clock++;
+        if (b == boundary - 1) spin_for(std::chrono::microseconds(3000));
+        log[b].end = clock++;
+      });
+      left[t] = clock++;
+    }
+    if (team != 2) GTEST_SKIP() << "no team of 2 threads";
+    EXPECT_GT(left[1], log[boundary - 1].end)
+        << "the thread above left before band " << boundary - 1 << " below it was done";
+  }
+}
+
+// After the nodal update no barrier either: a thread's highest band reads the
+// two lowest node rows of the band above, so it goes once the thread above
+// has marked its rows updated; the thread's other bands need only its own.
+TEST(Bands, HighestBandWaitsForTheRowsAboveToBeUpdated) {
+  sim::World w = banded_world({0, 4, 9});
+  std::vector<Visit> log(9);
+  long updated[2] = {-1, -1};
+  const auto gather = [&](auto visit) { sim::gather_own_bands(w, visit); };
+  if (!late_mark_log(w, sim::BandMark::NodalUpdate, gather, log, updated))
+    GTEST_SKIP() << "no team of 2 threads";
   EXPECT_GT(log[3].start, updated[1]) << "band 3 read rows the thread above had not updated";
 }
 
