@@ -117,6 +117,20 @@ TEST(Bands, OneThreadVisitsEveryBandEvenThenOdd) {
 
 }  // namespace
 
+// Runs body(t) on each thread of a team of two; false where no team of two
+// threads was had (the caller skips its checks).
+template <class Body>
+bool on_two_threads(Body body) {
+  int team = 0;
+#pragma omp parallel num_threads(2)
+  {
+#pragma omp single
+    team = omp_get_num_threads();
+    body(omp_get_thread_num());
+  }
+  return team == 2;
+}
+
 // On two threads: thread 1 marks its bands `mark` 3 ms late, thread 0 at
 // once, and then each runs `phase` (a scatter or the gather), which logs the
 // start of each band's visit. `marked[t]`: when thread t marked its bands.
@@ -125,12 +139,7 @@ template <class Phase>
 bool late_mark_log(sim::World& w, sim::BandMark mark, Phase phase, std::vector<Visit>& log,
                    long marked[2]) {
   std::atomic<long> clock{0};
-  int team = 0;
-#pragma omp parallel num_threads(2)
-  {
-#pragma omp single
-    team = omp_get_num_threads();
-    const int t = omp_get_thread_num();
+  const bool two = on_two_threads([&](int t) {
     if (t == 1) spin_for(std::chrono::microseconds(3000));
     marked[t] = clock++;
     sim::mark_own_bands(w, mark);
@@ -138,10 +147,10 @@ bool late_mark_log(sim::World& w, sim::BandMark mark, Phase phase, std::vector<V
       log[b].start = clock++;
       log[b].thread = t;
     });
-  }
+  });
   for (std::size_t b = 0; b < log.size(); ++b)
     EXPECT_GE(log[b].start, 0) << "band " << b << " was not visited";
-  return team == 2;
+  return two;
 }
 
 // No barrier before a scatter: the band below a thread boundary adds to the
@@ -167,12 +176,7 @@ TEST(Bands, ScatterEndsOnceTheBandBelowIsDone) {
     std::vector<Visit> log(9);
     long left[2] = {-1, -1};  // when each thread left the scatter
     std::atomic<long> clock{0};
-    int team = 0;
-#pragma omp parallel num_threads(2)
-    {
-#pragma omp single
-      team = omp_get_num_threads();
-      const int t = omp_get_thread_num();
+    const bool two = on_two_threads([&](int t) {
       sim::mark_own_bands(w, sim::BandMark::Walls);
       sim::scatter_own_bands(w, sim::BandMark::Forces, sim::BandMark::Walls, [&](int b) {
         log[b].start = clock++;
@@ -180,8 +184,8 @@ TEST(Bands, ScatterEndsOnceTheBandBelowIsDone) {
         log[b].end = clock++;
       });
       left[t] = clock++;
-    }
-    if (team != 2) GTEST_SKIP() << "no team of 2 threads";
+    });
+    if (!two) GTEST_SKIP() << "no team of 2 threads";
     EXPECT_GT(left[1], log[boundary - 1].end)
         << "the thread above left before band " << boundary - 1 << " below it was done";
   }
