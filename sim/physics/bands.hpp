@@ -282,8 +282,8 @@ void gather_own_bands(World& w, Visit visit) {
 // at a boundary between threads ever wait; a barrier made every thread wait
 // for the slowest at each of four phases. On 2 threads the 8,370-point
 // slope's `landslide run` took 4.01 s against 4.22 s with the barriers
-// (medians of 6 in turns); at 25 k and 67 k points no change showed
-// (bench/README.md, issue 17's fourteenth pass).
+// (medians of 6 in turns); at 25 k and 67 k points the runs in turns did
+// not separate (bench/README.md, issue 17's fourteenth pass).
 template <class Visit>
 void scatter_own_bands(World& w, BandMark which, BandMark ready, Visit visit) {
   const BandRange r = own_bands(w);
