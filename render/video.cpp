@@ -4,7 +4,9 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <exception>
 #include <filesystem>
+#include <future>
 #include <vector>
 
 #include "render/error.hpp"
@@ -69,6 +71,29 @@ void run_to(const VideoOptions& opt, std::vector<std::string> args,
     fs::remove(tmp, ec);
     throw VideoError("cannot rename " + tmp + " to " + final_path + ": " + ec.message());
   }
+}
+
+// The mp4's and the GIF's encoders (no GIF where its arguments are empty)
+// side by side: the GIF's palette filters take one core, and x264 used
+// about 1.3 (1.38 s of CPU in 1.03 s on 27 pages of 1280 x 667 px). Both are
+// waited for; the mp4's failure is told first.
+void run_side_by_side(const VideoOptions& opt, const std::vector<std::string>& mp4,
+                      const std::string& mp4_path, const std::vector<std::string>& gif,
+                      const std::string& gif_path) {
+  std::future<void> gif_done;
+  if (!gif.empty()) gif_done = std::async(std::launch::async, [&] { run_to(opt, gif, gif_path); });
+  std::exception_ptr failed;
+  try {
+    run_to(opt, mp4, mp4_path);
+  } catch (...) {
+    failed = std::current_exception();
+  }
+  try {
+    if (gif_done.valid()) gif_done.get();
+  } catch (...) {
+    if (!failed) failed = std::current_exception();
+  }
+  if (failed) std::rethrow_exception(failed);
 }
 
 }  // namespace
@@ -160,12 +185,14 @@ VideoFiles encode_video(const std::string& frames_dir, const std::string& out_di
   files.mp4 = (out / (name + ".mp4")).string();
   std::vector<std::string> mp4 = input;
   // x264 with yuv420p needs even sizes: pad (not scale) to keep pixels sharp.
-  mp4.insert(mp4.end(), {"-vf", repeat + ",pad=ceil(iw/2)*2:ceil(ih/2)*2:color=white",
+  // Each painted frame is converted to yuv420p once, before the repeats: the
+  // repeats converted it play_fps / fps times over. The same mp4 byte for
+  // byte, in 0.74 of the time (render/README.md).
+  mp4.insert(mp4.end(), {"-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2:color=white,format=yuv420p," + repeat,
                          "-c:v", "libx264", "-preset", "veryfast", "-crf",
                          std::to_string(opt.crf), "-pix_fmt", "yuv420p", "-movflags",
                          "+faststart", "-f", "mp4"});
-  run_to(opt, mp4, files.mp4);
-
+  std::vector<std::string> gif;
   if (opt.gif) {
     files.gif = (out / (name + ".gif")).string();
     const bool own = !opt.gif_frames_dir.empty();
@@ -175,10 +202,10 @@ VideoFiles encode_video(const std::string& frames_dir, const std::string& out_di
     // One palette for the whole clip (palettegen), then dithered mapping; at
     // the story's pace, without the mp4's repeats (VideoOptions).
     const std::string graph = fit + ",split[a][b];[a]palettegen[p];[b][p]paletteuse";
-    std::vector<std::string> gif = own ? input_of(fs::absolute(opt.gif_frames_dir)) : input;
+    gif = own ? input_of(fs::absolute(opt.gif_frames_dir)) : input;
     gif.insert(gif.end(), {"-vf", graph, "-loop", "0", "-f", "gif"});
-    run_to(opt, gif, files.gif);
   }
+  run_side_by_side(opt, mp4, files.mp4, gif, files.gif);
   return files;
 }
 

@@ -157,6 +157,7 @@ TEST(Video, FailuresThrowAndLeaveNoOutput) {
     EXPECT_NE(std::string(e.what()).find("ffmpeg failed"), std::string::npos) << e.what();
   }
   EXPECT_FALSE(fs::exists(dir.file("clip.mp4")));
+  EXPECT_FALSE(fs::exists(dir.file("clip.gif")));
   EXPECT_TRUE(no_partial_files(dir.path()));
 }
 
