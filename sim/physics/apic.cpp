@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "sim/physics/bands.hpp"
+#include "sim/physics/wall_friction.hpp"
 
 namespace sim {
 
@@ -42,6 +43,7 @@ void points_to_grid_apic(World& w) {
       }
     }
     w.band_sums[band * kBandSums + kKineticBeforeGrid] = kinetic;
+    if (!g.friction_walls.empty()) scatter_wall_gaps(w, band);
   });
 }
 

@@ -56,8 +56,9 @@ class AtSlideStart : public sim::Observer {
 // A 2 m x 0.25 m elastic plate on a floor of friction mu, under gravity
 // tilted by t degrees: gravity ramped in over 0.1 s (a gravity stage without
 // damping, so the plate is loaded without a shock), then kDuration s more.
-Slide slide(double t_deg, double mu) {
+Slide slide(double t_deg, double mu, sim::TransferScheme transfer = sim::TransferScheme::Flip) {
   sim::Scenario s = simtest::block_scenario({1.0, 0.0}, {3.0, 0.25}, 0.0625, 2, {0, 0}, {14, 1});
+  s.transfer = transfer;
   s.boundaries.bottom = {sim::BoundaryKind::Friction, mu};
   const double t = t_deg * kPi / 180;
   s.gravity = {kG * std::sin(t), -kG * std::cos(t)};
@@ -131,6 +132,33 @@ TEST(WallFriction, BlockStaysPutWhenTanTIsAtMostMu) {
     EXPECT_LT(std::fabs(r.distance), 5e-3 * free) << "t = " << c.t_deg << ", mu = " << c.mu;
     EXPECT_LT(std::fabs(r.velocity), 1e-3 * kG * std::sin(t) * kDuration)
         << "t = " << c.t_deg << ", mu = " << c.mu;
+  }
+}
+
+// The same plate with the affine transfer (sim/physics/apic.hpp): its P2G
+// once left the walls' gaps unset, so no node was ever in contact and a
+// block fell through a friction floor (issue 17, fifteenth pass).
+TEST(WallFriction, ApicBlockSlidesAtGTimesSinMinusMuCosAndStaysPutBelowMu) {
+  const struct {
+    double t_deg, mu;
+  } cases[] = {{30, 0.3}, {40, 0.2}, {35, 0.0}, {15, 0.3}, {25, 0.5}};
+  for (const auto& c : cases) {
+    const Slide r = slide(c.t_deg, c.mu, sim::TransferScheme::Apic);
+    const double t = c.t_deg * kPi / 180;
+    const double exact = kG * (std::sin(t) - c.mu * std::cos(t));
+    const double a = r.velocity / kDuration;
+    std::printf("APIC t = %.1f deg, mu = %.2f: a = %.5f m/s2 (exact %.5f), moved %.4f m, lift %.2f mm\n",
+                c.t_deg, c.mu, a, std::max(0.0, exact), r.distance, 1000 * r.lift);
+    // The FLIP tests' bounds above.
+    if (exact > 0) {
+      EXPECT_NEAR(a, exact, 0.005 * exact) << "t = " << c.t_deg << " deg, mu = " << c.mu;
+    } else {
+      const double free = 0.5 * kG * std::sin(t) * kDuration * kDuration;
+      EXPECT_LT(std::fabs(r.distance), 5e-3 * free) << "t = " << c.t_deg << ", mu = " << c.mu;
+      EXPECT_LT(std::fabs(r.velocity), 1e-3 * kG * std::sin(t) * kDuration)
+          << "t = " << c.t_deg << ", mu = " << c.mu;
+    }
+    EXPECT_LT(std::fabs(r.lift), 0.005) << "the block left the floor";
   }
 }
 
