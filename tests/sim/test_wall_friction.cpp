@@ -5,6 +5,7 @@
 // mu m g cos t per metre slid.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -85,6 +86,17 @@ Slide slide(double t_deg, double mu, sim::TransferScheme transfer = sim::Transfe
   return r;
 }
 
+// Where tan t <= mu: less than 0.5 % of the free slide, which would have
+// taken it g sin t T^2 / 2 (0.6 m at 15 deg), and almost no speed: what the
+// noise of the point velocities (Eq. 30) makes the stuck nodes slip (0.3 to
+// 3.3 mm).
+void expect_stays_put(const Slide& r, double t_deg, double mu) {
+  const double t = t_deg * kPi / 180;
+  const double free = 0.5 * kG * std::sin(t) * kDuration * kDuration;
+  EXPECT_LT(std::fabs(r.distance), 5e-3 * free) << "t = " << t_deg << ", mu = " << mu;
+  EXPECT_LT(std::fabs(r.velocity), 1e-3 * kG * std::sin(t) * kDuration) << "t = " << t_deg << ", mu = " << mu;
+}
+
 TEST(WallFriction, BlockSlidesAtGTimesSinMinusMuCos) {
   const struct {
     double t_deg, mu;
@@ -122,16 +134,9 @@ TEST(WallFriction, BlockStaysPutWhenTanTIsAtMostMu) {
   } cases[] = {{15, 0.3}, {25, 0.5}, {10, 1.0}, {21.4052, 0.4}};  // last: tan t = 0.98 mu
   for (const auto& c : cases) {
     const Slide r = slide(c.t_deg, c.mu);
-    const double t = c.t_deg * kPi / 180;
-    // Free sliding would have taken it g sin t T^2 / 2 (0.6 m at 15 deg).
-    const double free = 0.5 * kG * std::sin(t) * kDuration * kDuration;
-    std::printf("t = %.2f deg, mu = %.2f: moved %.3e m, speed %.3e m/s (free: %.3f m)\n",
-                c.t_deg, c.mu, r.distance, r.velocity, free);
-    // Less than 0.5 % of the free slide: what the noise of the point
-    // velocities (Eq. 30) makes the stuck nodes slip (0.3 to 3.3 mm).
-    EXPECT_LT(std::fabs(r.distance), 5e-3 * free) << "t = " << c.t_deg << ", mu = " << c.mu;
-    EXPECT_LT(std::fabs(r.velocity), 1e-3 * kG * std::sin(t) * kDuration)
-        << "t = " << c.t_deg << ", mu = " << c.mu;
+    std::printf("t = %.2f deg, mu = %.2f: moved %.3e m, speed %.3e m/s\n", c.t_deg, c.mu,
+                r.distance, r.velocity);
+    expect_stays_put(r, c.t_deg, c.mu);
   }
 }
 
@@ -147,16 +152,16 @@ TEST(WallFriction, ApicBlockSlidesAtGTimesSinMinusMuCosAndStaysPutBelowMu) {
     const double t = c.t_deg * kPi / 180;
     const double exact = kG * (std::sin(t) - c.mu * std::cos(t));
     const double a = r.velocity / kDuration;
-    std::printf("APIC t = %.1f deg, mu = %.2f: a = %.5f m/s2 (exact %.5f), moved %.4f m, lift %.2f mm\n",
+    std::printf("APIC t = %.1f deg, mu = %.2f: a = %.5f m/s2 (exact %.5f), moved %.4f m, lift %.2f mm",
                 c.t_deg, c.mu, a, std::max(0.0, exact), r.distance, 1000 * r.lift);
-    // The FLIP tests' bounds above.
+    // The FLIP tests' bounds above. The energy balance is printed, not held
+    // to FLIP's 2 %: -2.34 % at 30 deg, mu 0.3, where FLIP's is -0.59 %.
     if (exact > 0) {
+      std::printf(", balance %.3f %%\n", 100 * r.energy.relative_error);
       EXPECT_NEAR(a, exact, 0.005 * exact) << "t = " << c.t_deg << " deg, mu = " << c.mu;
     } else {
-      const double free = 0.5 * kG * std::sin(t) * kDuration * kDuration;
-      EXPECT_LT(std::fabs(r.distance), 5e-3 * free) << "t = " << c.t_deg << ", mu = " << c.mu;
-      EXPECT_LT(std::fabs(r.velocity), 1e-3 * kG * std::sin(t) * kDuration)
-          << "t = " << c.t_deg << ", mu = " << c.mu;
+      std::printf("\n");
+      expect_stays_put(r, c.t_deg, c.mu);
     }
     EXPECT_LT(std::fabs(r.lift), 0.005) << "the block left the floor";
   }
