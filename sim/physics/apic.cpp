@@ -4,7 +4,6 @@
 #include <cmath>
 
 #include "sim/physics/bands.hpp"
-#include "sim/physics/wall_friction.hpp"
 
 namespace sim {
 
@@ -22,29 +21,26 @@ double row_offset(const Grid& g, const Stencil& st, int b, double y) {
 
 }  // namespace
 
-void points_to_grid_apic(World& w) {
+void map_band_apic(World& w, int band) {
   const Particles& pts = w.points;
   Grid& g = w.grid;
-  scatter_own_bands(w, BandMark::Mass, BandMark::Reset, [&](int band) {
-    double kinetic = 0;
-    for (int s = w.band_start[band]; s < w.band_start[band + 1]; ++s) {
-      const int p = w.order[s];
-      const Stencil& st = w.stencils[p];
-      const double m = pts.mass[p], vx = pts.vx[p], vy = pts.vy[p];
-      kinetic += 0.5 * m * (vx * vx + vy * vy);
-      const Lane4 dx = column_offsets(g, st, pts.x[p]);
-      for (int b = 0; b < 3; ++b) {
-        const int row = g.node(st.base_i, st.base_j + b);
-        const double dy = row_offset(g, st, b, pts.y[p]);
-        const Lane4 mS = x_weights(st) * st.wy[b] * m;
-        store4(&g.mass[row], load4(&g.mass[row]) + mS);
-        store4(&g.px[row], load4(&g.px[row]) + mS * (vx + pts.cxx[p] * dx + pts.cxy[p] * dy));
-        store4(&g.py[row], load4(&g.py[row]) + mS * (vy + pts.cyx[p] * dx + pts.cyy[p] * dy));
-      }
+  double kinetic = 0;
+  for (int s = w.band_start[band]; s < w.band_start[band + 1]; ++s) {
+    const int p = w.order[s];
+    const Stencil& st = w.stencils[p];
+    const double m = pts.mass[p], vx = pts.vx[p], vy = pts.vy[p];
+    kinetic += 0.5 * m * (vx * vx + vy * vy);
+    const Lane4 dx = column_offsets(g, st, pts.x[p]);
+    for (int b = 0; b < 3; ++b) {
+      const int row = g.node(st.base_i, st.base_j + b);
+      const double dy = row_offset(g, st, b, pts.y[p]);
+      const Lane4 mS = x_weights(st) * st.wy[b] * m;
+      store4(&g.mass[row], load4(&g.mass[row]) + mS);
+      store4(&g.px[row], load4(&g.px[row]) + mS * (vx + pts.cxx[p] * dx + pts.cxy[p] * dy));
+      store4(&g.py[row], load4(&g.py[row]) + mS * (vy + pts.cyx[p] * dx + pts.cyy[p] * dy));
     }
-    w.band_sums[band * kBandSums + kKineticBeforeGrid] = kinetic;
-    if (!g.friction_walls.empty()) scatter_wall_gaps(w, band);
-  });
+  }
+  w.band_sums[band * kBandSums + kKineticBeforeGrid] = kinetic;
 }
 
 void grid_to_points_apic(World& w, const StepInput& in) {

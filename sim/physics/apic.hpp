@@ -24,9 +24,10 @@
 
 namespace sim {
 
-// Nodal mass and momentum with each point's affine field; the points'
-// kinetic energy goes to band_sums (kKineticBeforeGrid).
-void points_to_grid_apic(World& world);
+// Nodal mass and momentum of one band's points with each point's affine
+// field; their kinetic energy goes to band_sums (kKineticBeforeGrid). The
+// band visit of points_to_grid (step.hpp) for this transfer.
+void map_band_apic(World& world, int band);
 
 // Velocities, affine fields and positions from the grid (Eq. 29 moves the
 // points as in the FLIP update), the step's point sums to band_sums; damping

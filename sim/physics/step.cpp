@@ -28,7 +28,7 @@ void step(World& w, const StepInput& in, StepReport& report) {
   {
     if (locate_and_sort(w)) {  // false on every thread if a point left the grid
       reset_grid(w);  // marks its bands: P2G waits for those above its own
-      if (apic) points_to_grid_apic(w); else points_to_grid(w);
+      points_to_grid(w);
       enforce_walls_on_momentum(w);  // marks its bands: the stress phase waits for those it reads
       update_stress_and_forces(w, in);
       update_nodal_momentum(w, in.dt);  // marks its bands: G2P waits for those it reads
@@ -55,25 +55,39 @@ void reset_grid(World& w) {
   mark_own_bands(w, BandMark::Reset);
 }
 
-void points_to_grid(World& w) {
+namespace {
+
+// One band's points to their nodes with the paper's transfer.
+void map_band(World& w, int band) {
   const Particles& pts = w.points;
   Grid& g = w.grid;
-  scatter_own_bands(w, BandMark::Mass, BandMark::Reset, [&](int band) {
-    NodeSums<3> sums{{g.mass.data(), g.px.data(), g.py.data()}, g.stride};
-    for (int s = w.band_start[band]; s < w.band_start[band + 1]; ++s) {
-      const int p = w.order[s];
-      const Stencil& st = w.stencils[p];
-      const double m = pts.mass[p], mvx = m * pts.vx[p], mvy = m * pts.vy[p];
-      sums.hold(g.node(st.base_i, st.base_j));
-      for (int b = 0; b < 3; ++b) {
-        const Lane4 S = x_weights(st) * st.wy[b];  // S_ip, Eq. (12)
-        sums.rows[0][b] += S * m;                  // Eq. (26)
-        sums.rows[1][b] += S * mvx;                // Eq. (27)
-        sums.rows[2][b] += S * mvy;
-      }
+  NodeSums<3> sums{{g.mass.data(), g.px.data(), g.py.data()}, g.stride};
+  for (int s = w.band_start[band]; s < w.band_start[band + 1]; ++s) {
+    const int p = w.order[s];
+    const Stencil& st = w.stencils[p];
+    const double m = pts.mass[p], mvx = m * pts.vx[p], mvy = m * pts.vy[p];
+    sums.hold(g.node(st.base_i, st.base_j));
+    for (int b = 0; b < 3; ++b) {
+      const Lane4 S = x_weights(st) * st.wy[b];  // S_ip, Eq. (12)
+      sums.rows[0][b] += S * m;                  // Eq. (26)
+      sums.rows[1][b] += S * mvx;                // Eq. (27)
+      sums.rows[2][b] += S * mvy;
     }
-    sums.flush();
-    if (!g.friction_walls.empty()) scatter_wall_gaps(w, band);
+  }
+  sums.flush();
+}
+
+}  // namespace
+
+// Each band by the scene's transfer, then the friction walls' gaps of its
+// points, whatever the transfer: the APIC mapping once had a scatter of its
+// own without the gaps, and a block fell through a friction floor.
+void points_to_grid(World& w) {
+  const bool apic = w.transfer == TransferScheme::Apic;
+  const bool walls = !w.grid.friction_walls.empty();
+  scatter_own_bands(w, BandMark::Mass, BandMark::Reset, [&](int band) {
+    if (apic) map_band_apic(w, band); else map_band(w, band);
+    if (walls) scatter_wall_gaps(w, band);
   });
 }
 

@@ -51,7 +51,7 @@ void step(World& world, const StepInput& input, StepReport& report);
 void locate_points(World& world);  // GIMP stencils, Eqs. (12), (13); sorts into bands; throws
                                    // SimulationError if a point left the grid
 void reset_grid(World& world);
-void points_to_grid(World& world);         // nodal mass and momentum, Eqs. (26), (27)
+void points_to_grid(World& world);  // nodal mass and momentum, Eqs. (26), (27), or APIC's; wall gaps
 void enforce_walls_on_momentum(World& world);  // kinetic energy taken: grid.row_sums
 // Eqs. (31), (24), (21)-(23), (25), then (16), (17); stress work: band_sums.
 void update_stress_and_forces(World& world, const StepInput& input);
