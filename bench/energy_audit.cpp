@@ -56,13 +56,14 @@ void audit_step(const sim::World& w, const sim::StepInput& in, const std::vector
     }
   const sim::Particles& pts = w.points;
   for (std::size_t p = 0; p < pts.size(); ++p) {
-    const sim::Stencil& st = w.stencils[p];
+    const sim::StencilWeights& st = w.weights[p];
+    const sim::StencilSlopes& d = w.slopes[p];
     double ax = 0, ay = 0, wx = 0, wy = 0, lxx = 0, lxy = 0, lyx = 0, lyy = 0;
     for (int b = 0; b < 3; ++b)
       for (int c = 0; c < 3; ++c) {
         const int k = g.node(st.base_i + c, st.base_j + b);
         const double S = st.wx[c] * st.wy[b];
-        const double gx = st.dx[c] * st.wy[b], gy = st.wx[c] * st.dy[b];
+        const double gx = d.dx[c] * st.wy[b], gy = st.wx[c] * d.dy[b];
         ax += S * g.ax[k];
         ay += S * g.ay[k];
         wx += g.fix_x[k] ? S * g.ax[k] : 0.0;

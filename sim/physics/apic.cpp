@@ -10,12 +10,12 @@ namespace sim {
 namespace {
 
 // x_a - x_p for the stencil's three columns (lane 3: the spare node).
-Lane4 column_offsets(const Grid& g, const Stencil& st, double x) {
+Lane4 column_offsets(const Grid& g, const StencilWeights& st, double x) {
   const double first = g.origin_x + st.base_i * g.h - x;
   return Lane4{first, first + g.h, first + 2 * g.h, first + 3 * g.h};
 }
 
-double row_offset(const Grid& g, const Stencil& st, int b, double y) {
+double row_offset(const Grid& g, const StencilWeights& st, int b, double y) {
   return g.origin_y + (st.base_j + b) * g.h - y;
 }
 
@@ -27,7 +27,7 @@ void map_band_apic(World& w, int band) {
   double kinetic = 0;
   for (int s = w.band_start[band]; s < w.band_start[band + 1]; ++s) {
     const int p = w.order[s];
-    const Stencil& st = w.stencils[p];
+    const StencilWeights& st = w.weights[p];
     const double m = pts.mass[p], vx = pts.vx[p], vy = pts.vy[p];
     kinetic += 0.5 * m * (vx * vx + vy * vy);
     const Lane4 dx = column_offsets(g, st, pts.x[p]);
@@ -51,7 +51,7 @@ void grid_to_points_apic(World& w, const StepInput& in) {
     double gravity_work = 0, kinetic = 0, moving = 0, damped = 0, signal = 0;
     for (int s = w.band_start[band]; s < w.band_start[band + 1]; ++s) {
       const int p = w.order[s];
-      const Stencil& st = w.stencils[p];
+      const StencilWeights& st = w.weights[p];
       const Lane4 dx = column_offsets(g, st, pts.x[p]);
       Lane4 svx{}, svy{}, bxx{}, byx{};
       double bxy = 0, byy = 0, dyy = 0;

@@ -148,30 +148,40 @@ inline Lane8 load4x2(const double* nodes, int row_a, int row_c) {
 // neighbouring nodes of a grid row: x_weights and x_slopes put the x
 // weights or derivatives in lanes 0..2 of a Lane4 with lane 3 at 0 (the grid
 // keeps a spare node at the end of every row for lane 3, see grid.hpp).
-// Stored as plain doubles, 104 B instead of the 128 B that two aligned Lane4
-// members took (issue 17).
-struct Stencil {
-  double wx[3], dx[3];  // 1D weights and derivatives along x
-  double wy[3], dy[3];  // along y
+// Stored as plain doubles in two arrays per point (World::weights and
+// World::slopes): the transfers (P2G, G2P) read only the weights S_ip, 56 B a
+// point, and only the stress phase reads the derivatives too. As one 104 B
+// struct every phase streamed all of it: at 6.5 M points, where the step
+// waits on memory, P2G went from 9.0 to 7.2 and G2P from 11.6 to 9.9 ns per
+// point on one thread when they were split (issue 17, sixteenth pass,
+// bench/README.md). The same values, so the same bits.
+struct StencilWeights {
+  double wx[3], wy[3];  // 1D weights along x and y
   int base_i = 0, base_j = 0;
+};
+struct StencilSlopes {
+  double dx[3], dy[3];  // their derivatives
 };
 
 typedef std::int64_t Int4 __attribute__((vector_size(32)));
 
-// Three doubles of a stencil from byte `at` and a +0.0 lane, from one load
-// of four and a mask: the fourth double read is the next member's (dx[0]
-// after wx, wy[0] after dx), read as part of the Stencil's bytes. Built lane
-// by lane, g++ took three loads and an insert for each row (issue 17,
-// thirteenth pass); the lanes are the same bits either way.
-inline Lane4 first_three(const Stencil& st, std::size_t at) {
-  static_assert(offsetof(Stencil, dx) == 3 * sizeof(double) &&
-                    offsetof(Stencil, wy) == 6 * sizeof(double),
-                "wx and dx are each followed by another double of the stencil");
-  const Lane4 four = load4(reinterpret_cast<const double*>(reinterpret_cast<const char*>(&st) + at));
+// Three doubles from `row` and a +0.0 lane, from one load of four and a
+// mask: the fourth double read is the next member's (wy[0] after wx, dy[0]
+// after dx), part of the same struct. Built lane by lane, g++ took three
+// loads and an insert for each row (issue 17, thirteenth pass); the lanes are
+// the same bits either way.
+inline Lane4 first_three(const double* row) {
+  const Lane4 four = load4(row);
   return reinterpret_cast<Lane4>(reinterpret_cast<Int4>(four) & Int4{-1, -1, -1, 0});
 }
-inline Lane4 x_weights(const Stencil& st) { return first_three(st, offsetof(Stencil, wx)); }
-inline Lane4 x_slopes(const Stencil& st) { return first_three(st, offsetof(Stencil, dx)); }
+inline Lane4 x_weights(const StencilWeights& st) {
+  static_assert(offsetof(StencilWeights, wy) == 3 * sizeof(double), "wx is followed by wy");
+  return first_three(st.wx);
+}
+inline Lane4 x_slopes(const StencilSlopes& st) {
+  static_assert(offsetof(StencilSlopes, dy) == 3 * sizeof(double), "dx is followed by dy");
+  return first_three(st.dx);
+}
 
 // A Lane4 in both halves of a Lane8: one point's stencil row taken by a
 // vector operation of eight lanes whose two halves are two components.
@@ -266,9 +276,9 @@ __attribute__((always_inline)) inline void gimp_axis(const T& xp, double origin,
 
 // Fills the stencil of a particle at (xp, yp) on a grid with the given origin.
 inline void gimp_stencil(double xp, double yp, double origin_x, double origin_y,
-                         const GimpShape& k, Stencil& st) {
-  gimp_axis(xp, origin_x, k, st.base_i, st.wx, st.dx);
-  gimp_axis(yp, origin_y, k, st.base_j, st.wy, st.dy);
+                         const GimpShape& k, StencilWeights& st, StencilSlopes& d) {
+  gimp_axis(xp, origin_x, k, st.base_i, st.wx, d.dx);
+  gimp_axis(yp, origin_y, k, st.base_j, st.wy, d.dy);
 }
 
 }  // namespace sim

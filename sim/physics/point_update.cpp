@@ -65,12 +65,15 @@ struct MaterialLanesCache {
 // Velocity gradients L_ab = sum_i v_ia dS_ip/dx_b of two points, a stencil
 // row at a time, one point in each half of a Lane8; L = {xx, xy, yx, yy}, as
 // {xx_a, xx_c, xy_a, xy_c, yx_a, yx_c, yy_a, yy_c}.
-Lane8 velocity_gradients(const Grid& g, const Stencil& a, const Stencil& c) {
+Lane8 velocity_gradients(const World& w, int p, int q) {
+  const Grid& g = w.grid;
+  const StencilWeights &a = w.weights[p], &c = w.weights[q];
+  const StencilSlopes &da = w.slopes[p], &dc = w.slopes[q];
   Lane8 lxx{}, lxy{}, lyx{}, lyy{};
   for (int b = 0; b < 3; ++b) {
     const int ra = g.node(a.base_i, a.base_j + b), rc = g.node(c.base_i, c.base_j + b);
-    const Lane8 gx = join4(x_slopes(a) * a.wy[b], x_slopes(c) * c.wy[b]);
-    const Lane8 gy = join4(x_weights(a) * a.dy[b], x_weights(c) * c.dy[b]);
+    const Lane8 gx = join4(x_slopes(da) * a.wy[b], x_slopes(dc) * c.wy[b]);
+    const Lane8 gy = join4(x_weights(a) * da.dy[b], x_weights(c) * dc.dy[b]);
     const Lane8 vx = load4x2(g.vx.data(), ra, rc);
     const Lane8 vy = load4x2(g.vy.data(), ra, rc);
     lxx += vx * gx;
@@ -151,7 +154,7 @@ void update_eight_stresses(World& w, const int* p, int count, double dt, const M
   for (int l = 0; l < 8; ++l) q[l] = p[std::min(l, count - 1)];
   const bool run = stored_in_a_run(q, count);
   for (int k = 0; k < 4; ++k)
-    pairs[k] = velocity_gradients(w.grid, w.stencils[q[2 * k]], w.stencils[q[2 * k + 1]]);
+    pairs[k] = velocity_gradients(w, q[2 * k], q[2 * k + 1]);
   gradient_lanes(pairs, L);
   const Bytes8 flags = lanes_at<Bytes8>(pts.yielded.data(), q, run);
   const Int8 was_yielded = __builtin_convertvector(flags, Int8);
@@ -202,18 +205,19 @@ void update_eight_stresses(World& w, const int* p, int count, double dt, const M
 // halves) at p's base node, so each line below is both components at once.
 void scatter_point_force(World& w, int p, const UpdatedLanes& u, int l, const Vec2& gravity,
                          NodeSumsSideBySide& sums) {
-  const Stencil& st = w.stencils[p];
+  const StencilWeights& st = w.weights[p];
+  const StencilSlopes& d = w.slopes[p];
   const double V = u.volume[l];
   const double sxx = u.sxx[l], syy = u.syy[l], sxy = u.sxy[l];
   const double mgx = u.mass[l] * gravity[0], mgy = u.mass[l] * gravity[1];
   const auto halves = [](double lo, double hi) { return Lane8{lo, lo, lo, lo, hi, hi, hi, hi}; };
   const Lane8 first = halves(sxx, sxy), second = halves(sxy, syy), mg = halves(mgx, mgy);
   // The x rows in both halves once a point, not each product joined a row.
-  const Lane8 wx = twice(x_weights(st)), dx = twice(x_slopes(st));
+  const Lane8 wx = twice(x_weights(st)), dx = twice(x_slopes(d));
   sums.hold(w.grid.node(st.base_i, st.base_j));
   for (int b = 0; b < 3; ++b) {
     const Lane8 S = wx * st.wy[b];
-    const Lane8 gx = dx * st.wy[b], gy = wx * st.dy[b];  // grad S_ip
+    const Lane8 gx = dx * st.wy[b], gy = wx * d.dy[b];  // grad S_ip
     // f_int = -sigma_p . grad S_ip V_p, Eq. (16); f_ext = m_p b S_ip, Eq. (17).
     sums.rows[b] += -V * (first * gx + second * gy) + S * mg;
   }
@@ -221,7 +225,7 @@ void scatter_point_force(World& w, int p, const UpdatedLanes& u, int l, const Ve
 
 // The walls' share of a point's velocity change, w = sum_i S_ip held_a_i, as
 // |w|^2; only for points whose stencil a wall acts on.
-double walled_squared(const Grid& g, const Stencil& st) {
+double walled_squared(const Grid& g, const StencilWeights& st) {
   Lane4 swx{}, swy{};
   for (int b = 0; b < 3; ++b) {
     const int row = g.node(st.base_i, st.base_j + b);
@@ -331,14 +335,14 @@ void grid_to_points(World& w, const StepInput& in) {
         damped += damped_terms[l];
         fastest[material[r]] = std::max(fastest[material[r]], v2[l]);
         // Zero, and not added, for a point whose stencil no wall acts on.
-        const Stencil& st = w.stencils[r];
+        const StencilWeights& st = w.weights[r];
         if (g.reaches_walls(st.base_i, st.base_j))
           walled += 0.5 * m[l] * in.dt * in.dt * walled_squared(g, st);
       }
     };
     // The sums S_ip a_i and S_ip v_i of two points at once, one in each half
     // of a Lane8, as {ax_a, ax_c, ay_a, ay_c, vx_a, vx_c, vy_a, vy_c}.
-    const auto gather_two = [&](const Stencil& a, const Stencil& c) {
+    const auto gather_two = [&](const StencilWeights& a, const StencilWeights& c) {
       Lane8 sums[4] = {};
       for (int b = 0; b < 3; ++b) {
         const int ra = g.node(a.base_i, a.base_j + b), rc = g.node(c.base_i, c.base_j + b);
@@ -356,11 +360,11 @@ void grid_to_points(World& w, const StepInput& in) {
     int s = w.band_start[band];
     for (; s + 1 < end; s += 2) {
       const int p = w.order[s], q = w.order[s + 1];
-      update_two(p, q, gather_two(w.stencils[p], w.stencils[q]), true);
+      update_two(p, q, gather_two(w.weights[p], w.weights[q]), true);
     }
     if (s < end) {
       const int p = w.order[s];
-      update_two(p, p, gather_two(w.stencils[p], w.stencils[p]), false);
+      update_two(p, p, gather_two(w.weights[p], w.weights[p]), false);
     }
     double signal = 0;
     for (int k = 0; k < kinds; ++k)

@@ -64,7 +64,7 @@ void map_band(World& w, int band) {
   NodeSums<3> sums{{g.mass.data(), g.px.data(), g.py.data()}, g.stride};
   for (int s = w.band_start[band]; s < w.band_start[band + 1]; ++s) {
     const int p = w.order[s];
-    const Stencil& st = w.stencils[p];
+    const StencilWeights& st = w.weights[p];
     const double m = pts.mass[p], mvx = m * pts.vx[p], mvy = m * pts.vy[p];
     sums.hold(g.node(st.base_i, st.base_j));
     for (int b = 0; b < 3; ++b) {

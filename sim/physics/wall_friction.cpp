@@ -83,7 +83,7 @@ void scatter_wall_gaps(World& w, int band) {
   const double lp = w.gimp.lp;
   for (int s = w.band_start[band]; s < w.band_start[band + 1]; ++s) {
     const int p = w.order[s];
-    const Stencil& st = w.stencils[p];
+    const StencilWeights& st = w.weights[p];
     for (const FrictionWall& wall : g.friction_walls) {
       const int base = wall.axis == 0 ? st.base_i : st.base_j;
       if (base >= wall.last || base + 2 < wall.first) continue;  // the stencil misses the wall

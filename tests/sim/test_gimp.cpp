@@ -17,14 +17,15 @@ TEST(GimpWeights, SumToOneAndGradientsToZeroAtRandomPositions) {
     const double lp = kH / (2.0 * ppc);
     std::uniform_real_distribution<double> pos(2.0, 8.0);
     for (int k = 0; k < 20000; ++k) {
-      sim::Stencil st;
-      sim::gimp_stencil(pos(rng), pos(rng), -1.0, -1.0, sim::GimpShape(kH, lp), st);
+      sim::StencilWeights st;
+      sim::StencilSlopes d;
+      sim::gimp_stencil(pos(rng), pos(rng), -1.0, -1.0, sim::GimpShape(kH, lp), st, d);
       double sum = 0, gx = 0, gy = 0;
       for (int b = 0; b < 3; ++b)
         for (int a = 0; a < 3; ++a) {
           sum += st.wx[a] * st.wy[b];
-          gx += st.dx[a] * st.wy[b];
-          gy += st.wx[a] * st.dy[b];
+          gx += d.dx[a] * st.wy[b];
+          gy += st.wx[a] * d.dy[b];
           EXPECT_GE(st.wx[a] * st.wy[b], 0.0);
         }
       ASSERT_NEAR(sum, 1.0, 1e-13) << "ppc " << ppc;
@@ -55,16 +56,17 @@ TEST(GimpWeights, ReproducesLinearFields) {
   const double lp = kH / 4, ox = -0.3, oy = 0.2;
   for (int k = 0; k < 1000; ++k) {
     const double xp = pos(rng), yp = pos(rng);
-    sim::Stencil st;
-    sim::gimp_stencil(xp, yp, ox, oy, sim::GimpShape(kH, lp), st);
+    sim::StencilWeights st;
+    sim::StencilSlopes d;
+    sim::gimp_stencil(xp, yp, ox, oy, sim::GimpShape(kH, lp), st, d);
     double x = 0, y = 0, dxdx = 0, dydy = 0;
     for (int b = 0; b < 3; ++b)
       for (int a = 0; a < 3; ++a) {
         const double xi = ox + (st.base_i + a) * kH, yi = oy + (st.base_j + b) * kH;
         x += st.wx[a] * st.wy[b] * xi;
         y += st.wx[a] * st.wy[b] * yi;
-        dxdx += st.dx[a] * st.wy[b] * xi;
-        dydy += st.wx[a] * st.dy[b] * yi;
+        dxdx += d.dx[a] * st.wy[b] * xi;
+        dydy += st.wx[a] * d.dy[b] * yi;
       }
     EXPECT_NEAR(x, xp, 1e-12);
     EXPECT_NEAR(y, yp, 1e-12);
@@ -85,13 +87,14 @@ TEST(GimpWeights, StencilMatchesTheWeightAtEveryNode) {
       // Every fourth position sits on a node or a region edge.
       double xp = pos(rng);
       if (n % 4 == 0) xp = std::round(xp / k.lp) * k.lp;
-      sim::Stencil st;
-      sim::gimp_stencil(xp, xp, -1.0, -1.0, k, st);
+      sim::StencilWeights st;
+      sim::StencilSlopes d;
+      sim::gimp_stencil(xp, xp, -1.0, -1.0, k, st, d);
       for (int a = 0; a < 3; ++a) {
         double s, ds;
         sim::gimp_weight_1d(xp - (-1.0 + (st.base_i + a) * kH), k, s, ds);
         ASSERT_NEAR(st.wx[a], s, 1e-14) << "ppc " << ppc << ", x = " << xp << ", node " << a;
-        ASSERT_NEAR(st.dx[a], ds, 1e-12) << "ppc " << ppc << ", x = " << xp << ", node " << a;
+        ASSERT_NEAR(d.dx[a], ds, 1e-12) << "ppc " << ppc << ", x = " << xp << ", node " << a;
       }
       double beyond, d_beyond;  // the node past the stencil carries nothing
       sim::gimp_weight_1d(xp - (-1.0 + (st.base_i + 3) * kH), k, beyond, d_beyond);
@@ -103,14 +106,15 @@ TEST(GimpWeights, StencilMatchesTheWeightAtEveryNode) {
 // x_weights and x_slopes read four doubles of the stencil: lanes 0..2 are
 // the row itself and lane 3 is +0.0, whatever the next member holds.
 TEST(GimpWeights, XRowsHoldTheRowAndAZeroFourthLane) {
-  sim::Stencil st;
-  sim::gimp_stencil(3.1, 4.7, -1.0, -1.0, sim::GimpShape(kH, kH / 4), st);
-  st.dx[0] = -1.5;  // the double after wx
-  st.wy[0] = 2.5;   // the double after dx
-  const sim::Lane4 w = sim::x_weights(st), d = sim::x_slopes(st);
+  sim::StencilWeights st;
+  sim::StencilSlopes slopes;
+  sim::gimp_stencil(3.1, 4.7, -1.0, -1.0, sim::GimpShape(kH, kH / 4), st, slopes);
+  st.wy[0] = 2.5;       // the double after wx
+  slopes.dy[0] = -1.5;  // the double after dx
+  const sim::Lane4 w = sim::x_weights(st), d = sim::x_slopes(slopes);
   for (int a = 0; a < 3; ++a) {
     EXPECT_EQ(w[a], st.wx[a]);
-    EXPECT_EQ(d[a], st.dx[a]);
+    EXPECT_EQ(d[a], slopes.dx[a]);
   }
   for (const double fourth : {w[3], d[3]}) {
     EXPECT_EQ(fourth, 0.0);
