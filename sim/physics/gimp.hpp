@@ -151,10 +151,11 @@ inline Lane8 load4x2(const double* nodes, int row_a, int row_c) {
 // Stored as plain doubles in two arrays per point (World::weights and
 // World::slopes): the transfers (P2G, G2P) read only the weights S_ip, 56 B a
 // point, and only the stress phase reads the derivatives too. As one 104 B
-// struct every phase streamed all of it: at 6.5 M points, where the step
-// waits on memory, P2G went from 9.0 to 7.2 and G2P from 11.6 to 9.9 ns per
-// point on one thread when they were split (issue 17, sixteenth pass,
-// bench/README.md). The same values, so the same bits.
+// struct every phase streamed all of it: at 6.5 M points, where the point
+// arrays come from memory rather than cache, P2G went from 9.0 to 7.2 and
+// G2P from 11.6 to 9.9 ns per point on one thread when they were split
+// (issue 17, sixteenth pass, bench/README.md). The same values, so the same
+// bits.
 struct StencilWeights {
   double wx[3], wy[3];  // 1D weights along x and y
   int base_i = 0, base_j = 0;
