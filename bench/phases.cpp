@@ -92,10 +92,8 @@ int main(int argc, char** argv) {
     sim::sort_points_by_cell(w);
     w.scene_index.clear();
   }
-  double signal = 0;
-  for (const auto& m : w.materials) signal = std::max(signal, m.wave_speed);
   sim::StepInput in;
-  in.dt = s.time_step.courant * s.cell_size / signal;
+  in.dt = s.time_step.courant * s.cell_size / sim::max_signal_speed(w);  // at rest: the fastest P wave
   in.gravity = s.gravity;
   sim::StepReport report;
   for (int k = 0; k < 30; ++k) sim::step(w, in, report);  // past the first, elastic steps

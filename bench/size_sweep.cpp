@@ -69,9 +69,7 @@ struct Row {
 Row make_row(int refine) {
   const sim::Scenario s = granular_column(refine);
   Row row{sim::make_world(s), {}};
-  double signal = 0;
-  for (const auto& m : row.world.materials) signal = std::max(signal, m.wave_speed);
-  row.input.dt = s.time_step.courant * s.cell_size / signal;
+  row.input.dt = s.time_step.courant * s.cell_size / sim::max_signal_speed(row.world);
   row.input.gravity = s.gravity;
   return row;
 }

@@ -154,10 +154,8 @@ std::vector<Row> rows(bool quick) {
                }});
   r.push_back({"fixed dt 1.2x the bound", [=] {
                  sim::Scenario s = slope();
-                 double signal = 0;  // the fastest P wave (the house's)
-                 const sim::Simulation probe(s);  // a named object: the loop
-                 for (const auto& m : probe.world().materials)  // must not outlive it
-                   signal = std::max(signal, m.wave_speed);
+                 // At rest, the fastest P wave (the house's).
+                 const double signal = sim::max_signal_speed(sim::Simulation(s).world());
                  s.time_step.mode = sim::TimeStepSpec::Mode::Fixed;
                  s.time_step.fixed_dt = 1.2 * 0.5 * s.cell_size / signal;
                  return s;

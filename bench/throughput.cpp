@@ -71,7 +71,7 @@ double run(sim::Scenario s, int threads, int steps, std::size_t& points, double&
   {  // the probe is gone before the measured run, so it adds no memory to it
     sim::Simulation probe(s);
     points = probe.world().points.size();
-    for (const auto& m : probe.world().materials) signal = std::max(signal, m.wave_speed);
+    signal = sim::max_signal_speed(probe.world());  // at rest: the fastest P wave
   }
   // About `steps` steps: the duration of that many steps at rest; the Courant
   // step shortens a little as the points speed up, and the steps taken count.
