@@ -40,8 +40,9 @@ struct Totals {
 };
 
 // The terms A, B and Q of one step (see the top of the file).
+// s0, rho0, xy0: each point's stress, density and position before the step.
 void audit_step(const sim::World& w, const sim::StepInput& in, const std::vector<double>& s0,
-                const std::vector<double>& rho0, Totals& t) {
+                const std::vector<double>& rho0, const std::vector<double>& xy0, Totals& t) {
   const sim::Grid& g = w.grid;
   const double dt = in.dt;
   for (int j = g.j_begin; j < g.j_end; ++j)
@@ -56,8 +57,11 @@ void audit_step(const sim::World& w, const sim::StepInput& in, const std::vector
     }
   const sim::Particles& pts = w.points;
   for (std::size_t p = 0; p < pts.size(); ++p) {
-    const sim::StencilWeights& st = w.weights[p];
-    const sim::StencilSlopes& d = w.slopes[p];
+    // The step's stencil, made again where the point stood (the step keeps
+    // only the weights).
+    sim::StencilWeights st;
+    sim::StencilSlopes d;
+    sim::gimp_stencil(xy0[2 * p], xy0[2 * p + 1], g.origin_x, g.origin_y, w.gimp, st, d);
     double ax = 0, ay = 0, wx = 0, wy = 0, lxx = 0, lxy = 0, lyx = 0, lyy = 0;
     for (int b = 0; b < 3; ++b)
       for (int c = 0; c < 3; ++c) {
@@ -112,7 +116,7 @@ int main(int argc, char** argv) {
   Totals t;
   double time = 0, max_signal = sim::max_signal_speed(w), moving = 0;
   const double k_start = sim::kinetic_energy(w);
-  std::vector<double> s0(3 * w.points.size()), rho0(w.points.size());
+  std::vector<double> s0(3 * w.points.size()), rho0(w.points.size()), xy0(2 * w.points.size());
   sim::StepReport r;
   while (time < stage.duration * (1 - 1e-9)) {
     if (t.steps > 0 && stage.rest.enabled && time >= stage.rest.min_time &&
@@ -124,10 +128,12 @@ int main(int argc, char** argv) {
       s0[3 * p + 1] = w.points.syy[p];
       s0[3 * p + 2] = w.points.sxy[p];
       rho0[p] = w.points.density[p];
+      xy0[2 * p] = w.points.x[p];
+      xy0[2 * p + 1] = w.points.y[p];
     }
     const sim::StepInput in{dt, gravity, stage.damping};
     sim::step(w, in, r);
-    audit_step(w, in, s0, rho0, t);
+    audit_step(w, in, s0, rho0, xy0, t);
     t.ext += r.gravity_work;
     t.internal += r.internal_work;
     t.damping += r.damping_loss;

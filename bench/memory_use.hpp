@@ -36,7 +36,7 @@ inline double vector_bytes(const sim::World& w, double* grid) {
     if (!v->empty()) per_node += sizeof(double);
   const double window = double(g.i_end - g.i_begin) * double(g.j_end - g.j_begin);
   const double nodes = per_node * window + bytes(g.row_sums);
-  const double scratch = bytes(w.weights) + bytes(w.slopes) + bytes(w.bin_key) + bytes(w.order) +
+  const double scratch = bytes(w.weights) + bytes(w.bin_key) + bytes(w.order) +
                          bytes(w.band_start) + bytes(w.thread_counts) + bytes(w.thread_window) +
                          bytes(w.thread_totals) + bytes(w.thread_bands) + bytes(w.band_sums) +
                          bytes(w.material_specs) + bytes(w.materials) + bytes(w.scene_index) +

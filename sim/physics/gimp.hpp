@@ -145,30 +145,28 @@ inline Lane8 load4x2(const double* nodes, int row_a, int row_c) {
 
 // One particle's 3x3 stencil: nodes (base_i + a, base_j + b), a, b in 0..2.
 // The phases read a stencil row as one vector operation on three
-// neighbouring nodes of a grid row: x_weights and x_slopes put the x
-// weights or derivatives in lanes 0..2 of a Lane4 with lane 3 at 0 (the grid
-// keeps a spare node at the end of every row for lane 3, see grid.hpp).
-// Stored as plain doubles in two arrays per point (World::weights and
-// World::slopes): the transfers (P2G, G2P) read only the weights S_ip, 56 B a
-// point, and only the stress phase reads the derivatives too. As one 104 B
-// struct every phase streamed all of it: at 6.5 M points, where the point
-// arrays come from memory rather than cache, P2G went from 9.0 to 7.2 and
-// G2P from 11.6 to 9.9 ns per point on one thread when they were split
-// (issue 17, sixteenth pass, bench/README.md). The same values, so the same
-// bits.
+// neighbouring nodes of a grid row: x_weights puts the x weights in lanes
+// 0..2 of a Lane4 with lane 3 at 0 (the grid keeps a spare node at the end of
+// every row for lane 3, see grid.hpp).
+// Only the weights are stored, 56 B a point (World::weights): the transfers
+// (P2G, G2P) read nothing else, and the stress phase makes the derivatives
+// again from the positions (gimp_axis_slopes below). Stored apart from the
+// weights, the derivatives were 48 B a point that locate wrote and the
+// stress phase read back, from memory at 6.5 M points (issue 17, eighteenth
+// pass, bench/README.md). The same values, so the same bits.
 struct StencilWeights {
   double wx[3], wy[3];  // 1D weights along x and y
   int base_i = 0, base_j = 0;
 };
-struct StencilSlopes {
-  double dx[3], dy[3];  // their derivatives
+struct StencilSlopes {  // its derivatives, for tests and benches (gimp_stencil)
+  double dx[3], dy[3];
 };
 
 typedef std::int64_t Int4 __attribute__((vector_size(32)));
 
 // Three doubles from `row` and a +0.0 lane, from one load of four and a
-// mask: the fourth double read is the next member's (wy[0] after wx, dy[0]
-// after dx), part of the same struct. Built lane by lane, g++ took three
+// mask: the fourth double read is the next member's (wy[0] after wx), part
+// of the same struct. Built lane by lane, g++ took three
 // loads and an insert for each row (issue 17, thirteenth pass); the lanes are
 // the same bits either way.
 inline Lane4 first_three(const double* row) {
@@ -178,10 +176,6 @@ inline Lane4 first_three(const double* row) {
 inline Lane4 x_weights(const StencilWeights& st) {
   static_assert(offsetof(StencilWeights, wy) == 3 * sizeof(double), "wx is followed by wy");
   return first_three(st.wx);
-}
-inline Lane4 x_slopes(const StencilSlopes& st) {
-  static_assert(offsetof(StencilSlopes, dy) == 3 * sizeof(double), "dx is followed by dy");
-  return first_three(st.dx);
 }
 
 // A Lane4 in both halves of a Lane8: one point's stencil row taken by a
@@ -273,6 +267,18 @@ __attribute__((always_inline)) inline void gimp_axis(const T& xp, double origin,
   w[1] = near1 ? s_near : s_hat;
   d[1] = near1 ? d_near : d_hat;
   gimp_far(x2, k, w[2], d[2]);  // zero beyond h + l_p
+}
+
+// gimp_axis's derivatives alone, which the stress phase makes again from the
+// points' positions rather than read back stored (the weights' arithmetic is
+// left unused and dropped by the compiler): the same operations on the same
+// positions, so the same bits as locate's.
+template <class T, class I>
+__attribute__((always_inline)) inline void gimp_axis_slopes(const T& xp, double origin,
+                                                            const GimpShape& k, T d[3]) {
+  I base;
+  T w[3];
+  gimp_axis(xp, origin, k, base, w, d);
 }
 
 // Fills the stencil of a particle at (xp, yp) on a grid with the given origin.

@@ -84,23 +84,22 @@ void compute_stencils(World& w, int first_block, int end_block, int* counts, int
       }
     }
     Int8 base_i, base_j;
-    // The lanes of each weight side by side, so that a point's twelve
-    // doubles are read from one small block (its stencil is a row of each array).
-    Lane8 lanes[12];
-    gimp_axis(x, g.origin_x, w.gimp, base_i, &lanes[0], &lanes[3]);
-    gimp_axis(y, g.origin_y, w.gimp, base_j, &lanes[6], &lanes[9]);
-    double weights[12][8];
+    // The lanes of each weight side by side, so that a point's six doubles
+    // are read from one small block (its stencil is a row of each array).
+    // The derivatives are not kept: the stress phase makes them again from
+    // the positions (point_update.cpp), and the compiler drops them here.
+    Lane8 lanes[6], slopes[3];
+    gimp_axis(x, g.origin_x, w.gimp, base_i, &lanes[0], slopes);
+    gimp_axis(y, g.origin_y, w.gimp, base_j, &lanes[3], slopes);
+    double weights[6][8];
     std::memcpy(weights, lanes, sizeof weights);
     for (int l = 0; l < count; ++l) {
       StencilWeights& st = w.weights[first + l];
-      StencilSlopes& d = w.slopes[first + l];
       st.base_i = static_cast<int>(base_i[l]);
       st.base_j = static_cast<int>(base_j[l]);
       for (int a = 0; a < 3; ++a) {
         st.wx[a] = weights[a][l];
-        d.dx[a] = weights[3 + a][l];
-        st.wy[a] = weights[6 + a][l];
-        d.dy[a] = weights[9 + a][l];
+        st.wy[a] = weights[3 + a][l];
       }
       const bool inside = std::isfinite(x[l]) && std::isfinite(y[l]) && st.base_i >= 0 &&
                           st.base_j >= 0 && st.base_i + 2 < g.nx && st.base_j + 2 < g.ny;
@@ -309,7 +308,6 @@ void prepare_locate(World& w) {
   const int threads = omp_get_max_threads();
   ++w.step_serial;
   w.weights.resize(n);
-  w.slopes.resize(n);
   w.bin_key.resize(n);
   w.thread_window.resize(static_cast<std::size_t>(threads) * kWindowInts);
   w.thread_totals.resize(static_cast<std::size_t>(threads));

@@ -10,6 +10,7 @@
 #include "sim/physics/exp_lanes.hpp"
 #include "sim/physics/granular.hpp"
 #include "sim/physics/mohr_coulomb_return.hpp"
+#include "sim/physics/slope_lanes.hpp"
 #include "sim/physics/step.hpp"
 
 namespace sim {
@@ -62,18 +63,19 @@ struct MaterialLanesCache {
   }
 };
 
-// Velocity gradients L_ab = sum_i v_ia dS_ip/dx_b of two points, a stencil
-// row at a time, one point in each half of a Lane8; L = {xx, xy, yx, yy}, as
-// {xx_a, xx_c, xy_a, xy_c, yx_a, yx_c, yy_a, yy_c}.
-Lane8 velocity_gradients(const World& w, int p, int q) {
+// Velocity gradients L_ab = sum_i v_ia dS_ip/dx_b of points 2k and 2k + 1
+// (p and q), a stencil row at a time, one point in each half of a Lane8;
+// L = {xx, xy, yx, yy}, as {xx_a, xx_c, xy_a, xy_c, yx_a, yx_c, yy_a, yy_c}.
+template <int k>
+Lane8 velocity_gradients(const World& w, int p, int q, const SlopeLanes& d) {
   const Grid& g = w.grid;
   const StencilWeights &a = w.weights[p], &c = w.weights[q];
-  const StencilSlopes &da = w.slopes[p], &dc = w.slopes[q];
+  const Lane8 x_slopes = d.x_rows[k], x_weights_ac = join4(x_weights(a), x_weights(c));
   Lane8 lxx{}, lxy{}, lyx{}, lyy{};
   for (int b = 0; b < 3; ++b) {
     const int ra = g.node(a.base_i, a.base_j + b), rc = g.node(c.base_i, c.base_j + b);
-    const Lane8 gx = join4(x_slopes(da) * a.wy[b], x_slopes(dc) * c.wy[b]);
-    const Lane8 gy = join4(x_weights(a) * da.dy[b], x_weights(c) * dc.dy[b]);
+    const Lane8 gx = x_slopes * join4(Lane4{} + a.wy[b], Lane4{} + c.wy[b]);
+    const Lane8 gy = x_weights_ac * pair_halves<k>(d.dy[b]);
     const Lane8 vx = load4x2(g.vx.data(), ra, rc);
     const Lane8 vy = load4x2(g.vy.data(), ra, rc);
     lxx += vx * gx;
@@ -135,6 +137,7 @@ void store_lanes(T* a, const int q[8], int count, bool run, const V& v) {
 struct UpdatedLanes {
   Lane8 sxx, syy, sxy, volume, mass;
   Lane8 work;  // each point's stress work over the step (Eq. 3)
+  SlopeLanes slopes;
 };
 
 // The stress update of points p[0..count), count <= 8, eight at a time
@@ -153,8 +156,12 @@ void update_eight_stresses(World& w, const int* p, int count, double dt, const M
   Lane8 pairs[4], L[4];
   for (int l = 0; l < 8; ++l) q[l] = p[std::min(l, count - 1)];
   const bool run = stored_in_a_run(q, count);
-  for (int k = 0; k < 4; ++k)
-    pairs[k] = velocity_gradients(w, q[2 * k], q[2 * k + 1]);
+  out.slopes = slope_lanes(lanes_at<Lane8>(pts.x.data(), q, run),
+                           lanes_at<Lane8>(pts.y.data(), q, run), w.grid, w.gimp);
+  pairs[0] = velocity_gradients<0>(w, q[0], q[1], out.slopes);
+  pairs[1] = velocity_gradients<1>(w, q[2], q[3], out.slopes);
+  pairs[2] = velocity_gradients<2>(w, q[4], q[5], out.slopes);
+  pairs[3] = velocity_gradients<3>(w, q[6], q[7], out.slopes);
   gradient_lanes(pairs, L);
   const Bytes8 flags = lanes_at<Bytes8>(pts.yielded.data(), q, run);
   const Int8 was_yielded = __builtin_convertvector(flags, Int8);
@@ -206,18 +213,19 @@ void update_eight_stresses(World& w, const int* p, int count, double dt, const M
 void scatter_point_force(World& w, int p, const UpdatedLanes& u, int l, const Vec2& gravity,
                          NodeSumsSideBySide& sums) {
   const StencilWeights& st = w.weights[p];
-  const StencilSlopes& d = w.slopes[p];
+
   const double V = u.volume[l];
   const double sxx = u.sxx[l], syy = u.syy[l], sxy = u.sxy[l];
   const double mgx = u.mass[l] * gravity[0], mgy = u.mass[l] * gravity[1];
   const auto halves = [](double lo, double hi) { return Lane8{lo, lo, lo, lo, hi, hi, hi, hi}; };
   const Lane8 first = halves(sxx, sxy), second = halves(sxy, syy), mg = halves(mgx, mgy);
   // The x rows in both halves once a point, not each product joined a row.
-  const Lane8 wx = twice(x_weights(st)), dx = twice(x_slopes(d));
+  const Lane8& rows = u.slopes.x_rows[l / 2];
+  const Lane8 wx = twice(x_weights(st)), dx = twice(l % 2 ? high4(rows) : low4(rows));
   sums.hold(w.grid.node(st.base_i, st.base_j));
   for (int b = 0; b < 3; ++b) {
     const Lane8 S = wx * st.wy[b];
-    const Lane8 gx = dx * st.wy[b], gy = wx * d.dy[b];  // grad S_ip
+    const Lane8 gx = dx * st.wy[b], gy = wx * u.slopes.dy[b][l];  // grad S_ip
     // f_int = -sigma_p . grad S_ip V_p, Eq. (16); f_ext = m_p b S_ip, Eq. (17).
     sums.rows[b] += -V * (first * gx + second * gy) + S * mg;
   }

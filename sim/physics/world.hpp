@@ -61,7 +61,6 @@ struct World {
 
   // Scratch, rebuilt every step.
   std::vector<StencilWeights> weights;  // per point: its stencil's S_ip and base node
-  std::vector<StencilSlopes> slopes;    // per point: its stencil's dS_ip/dx
   std::vector<int> bin_key;       // per point: the bin of its stencil's base node
   std::vector<int> order;         // points sorted by their stencil's base node
   std::vector<int> band_start;    // order[band_start[b] .. band_start[b+1]) is band b

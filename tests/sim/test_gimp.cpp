@@ -3,9 +3,12 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <random>
 
 #include "sim/physics/gimp.hpp"
+#include "sim/physics/slope_lanes.hpp"
 
 namespace {
 
@@ -103,27 +106,76 @@ TEST(GimpWeights, StencilMatchesTheWeightAtEveryNode) {
   }
 }
 
-// x_weights and x_slopes read four doubles of the stencil: lanes 0..2 are
-// the row itself and lane 3 is +0.0, whatever the next member holds.
+// x_weights reads four doubles of the stencil: lanes 0..2 are the row itself
+// and lane 3 is +0.0, whatever the next member holds.
 TEST(GimpWeights, XRowsHoldTheRowAndAZeroFourthLane) {
   sim::StencilWeights st;
   sim::StencilSlopes slopes;
   sim::gimp_stencil(3.1, 4.7, -1.0, -1.0, sim::GimpShape(kH, kH / 4), st, slopes);
-  st.wy[0] = 2.5;       // the double after wx
-  slopes.dy[0] = -1.5;  // the double after dx
-  const sim::Lane4 w = sim::x_weights(st), d = sim::x_slopes(slopes);
-  for (int a = 0; a < 3; ++a) {
-    EXPECT_EQ(w[a], st.wx[a]);
-    EXPECT_EQ(d[a], slopes.dx[a]);
-  }
-  for (const double fourth : {w[3], d[3]}) {
-    EXPECT_EQ(fourth, 0.0);
-    EXPECT_FALSE(std::signbit(fourth));
-  }
+  st.wy[0] = 2.5;  // the double after wx
+  const sim::Lane4 w = sim::x_weights(st);
+  for (int a = 0; a < 3; ++a) EXPECT_EQ(w[a], st.wx[a]);
+  EXPECT_EQ(w[3], 0.0);
+  EXPECT_FALSE(std::signbit(w[3]));
   const sim::Lane8 both = sim::twice(w);
   for (int l = 0; l < 4; ++l) {
     EXPECT_EQ(both[l], w[l]);
     EXPECT_EQ(both[l + 4], w[l]);
+  }
+}
+
+// The stress phase makes the derivatives again from the positions with
+// gimp_axis_slopes; each lane must be, bit for bit, what locate's one-point
+// stencil gives, including positions on nodes and region edges.
+TEST(GimpWeights, SlopesMadeAgainAreTheStencilsBitForBit) {
+  std::mt19937_64 rng(11);
+  for (const int ppc : {1, 2, 3, 4}) {
+    const sim::GimpShape k(kH, kH / (2.0 * ppc));
+    std::uniform_real_distribution<double> pos(0.0, 4.0);
+    for (int n = 0; n < 2000; ++n) {
+      sim::Lane8 x;
+      for (int l = 0; l < 8; ++l) {
+        x[l] = pos(rng);
+        if (l % 4 == 0) x[l] = std::round(x[l] / k.lp) * k.lp;
+      }
+      sim::Lane8 d[3];
+      sim::gimp_axis_slopes<sim::Lane8, sim::Int8>(x, -1.0, k, d);
+      for (int l = 0; l < 8; ++l) {
+        sim::StencilWeights st;
+        sim::StencilSlopes one;
+        sim::gimp_stencil(x[l], x[l], -1.0, -1.0, k, st, one);
+        for (int a = 0; a < 3; ++a) {
+          std::uint64_t made, stored;
+          std::memcpy(&made, &d[a][l], sizeof made);
+          std::memcpy(&stored, &one.dx[a], sizeof stored);
+          ASSERT_EQ(made, stored) << "ppc " << ppc << ", x = " << x[l] << ", node " << a;
+        }
+      }
+    }
+  }
+}
+
+// slope_lanes hands them on as stencil rows of two points, {dx0, dx1, dx2,
+// +0.0} each, and as one lane a point for dy.
+TEST(GimpWeights, SlopeLanesHoldEachPointsRows) {
+  sim::Grid g;
+  g.origin_x = -1.0;
+  g.origin_y = -2.0;
+  const sim::GimpShape k(kH, kH / 4);
+  const sim::Lane8 x{0.1, 0.37, 1.2, 2.05, 0.0, 3.3, 1.49, 0.77};
+  const sim::Lane8 y{2.2, 0.4, 0.15, 1.9, 3.1, 0.0, 0.66, 2.5};
+  const sim::SlopeLanes s = sim::slope_lanes(x, y, g, k);
+  for (int l = 0; l < 8; ++l) {
+    sim::StencilWeights st;
+    sim::StencilSlopes one;
+    sim::gimp_stencil(x[l], y[l], g.origin_x, g.origin_y, k, st, one);
+    const sim::Lane8& rows = s.x_rows[l / 2];
+    for (int a = 0; a < 3; ++a) {
+      EXPECT_EQ(rows[4 * (l % 2) + a], one.dx[a]) << "point " << l << ", node " << a;
+      EXPECT_EQ(s.dy[a][l], one.dy[a]) << "point " << l << ", row " << a;
+    }
+    EXPECT_EQ(rows[4 * (l % 2) + 3], 0.0);
+    EXPECT_FALSE(std::signbit(rows[4 * (l % 2) + 3]));
   }
 }
 
