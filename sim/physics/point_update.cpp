@@ -213,7 +213,6 @@ void update_eight_stresses(World& w, const int* p, int count, double dt, const M
 void scatter_point_force(World& w, int p, const UpdatedLanes& u, int l, const Vec2& gravity,
                          NodeSumsSideBySide& sums) {
   const StencilWeights& st = w.weights[p];
-
   const double V = u.volume[l];
   const double sxx = u.sxx[l], syy = u.syy[l], sxy = u.sxy[l];
   const double mgx = u.mass[l] * gravity[0], mgy = u.mass[l] * gravity[1];
