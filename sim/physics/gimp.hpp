@@ -166,9 +166,9 @@ typedef std::int64_t Int4 __attribute__((vector_size(32)));
 
 // Three doubles from `row` and a +0.0 lane, from one load of four and a
 // mask: the fourth double read is the next member's (wy[0] after wx), part
-// of the same struct. Built lane by lane, g++ took three
-// loads and an insert for each row (issue 17, thirteenth pass); the lanes are
-// the same bits either way.
+// of the same struct. Built lane by lane, g++ took three loads and an insert
+// for each row (issue 17, thirteenth pass); the lanes are the same bits
+// either way.
 inline Lane4 first_three(const double* row) {
   const Lane4 four = load4(row);
   return reinterpret_cast<Lane4>(reinterpret_cast<Int4>(four) & Int4{-1, -1, -1, 0});
