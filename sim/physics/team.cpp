@@ -63,15 +63,23 @@ int free_cores() {
   return static_cast<int>(std::clamp<long>(cores - others, 1, asked));
 }
 
+int settle_team(Team& team, int free) {
+  const int threads = std::max(free, team.last_count);
+  team.last_count = free;
+  return threads;
+}
+
 void follow_free_cores(bool follow) { following = follow; }
 
 int team_size(Team& team) {
   const int asked = omp_get_max_threads();
   if (asked == 1 || !following) return asked;
   const auto now = std::chrono::steady_clock::now();
-  if (asked != team.asked || now - team.counted >= kRecount) {
+  const auto wait = team.last_count < team.threads ? kConfirm : kRecount;
+  if (asked != team.asked || now - team.counted >= wait) {
+    if (asked != team.asked) team.last_count = asked;  // no count before at this size
     team.asked = asked;
-    team.threads = free_cores();
+    team.threads = settle_team(team, free_cores());
     team.counted = now;
   }
   return team.threads;
