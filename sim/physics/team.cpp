@@ -63,7 +63,9 @@ int free_cores() {
   return static_cast<int>(std::clamp<long>(cores - others, 1, asked));
 }
 
-int settle_team(Team& team, int free) {
+int settle_team(Team& team, int asked, int free) {
+  if (asked != team.asked) team.last_count = asked;  // no count before at this size
+  team.asked = asked;
   const int threads = std::max(free, team.last_count);
   team.last_count = free;
   return threads;
@@ -77,9 +79,7 @@ int team_size(Team& team) {
   const auto now = std::chrono::steady_clock::now();
   const auto wait = team.last_count < team.threads ? kConfirm : kRecount;
   if (asked != team.asked || now - team.counted >= wait) {
-    if (asked != team.asked) team.last_count = asked;  // no count before at this size
-    team.asked = asked;
-    team.threads = settle_team(team, free_cores());
+    team.threads = settle_team(team, asked, free_cores());
     team.counted = now;
   }
   return team.threads;

@@ -44,9 +44,10 @@ struct Team {
 // read, omp_get_max_threads().
 int free_cores();
 
-// The team's size after a count that found `free` cores: the larger of it
-// and the count before (see above).
-int settle_team(Team& team, int free);
+// The team's size after a count that found `free` of `asked` cores: the
+// larger of it and the count before (see above), or of it and `asked` where
+// the threads asked for changed.
+int settle_team(Team& team, int asked, int free);
 
 // free_cores(), counted again when kRecount has passed (kConfirm after a
 // count that found fewer cores than the team has) or the threads asked for

@@ -51,24 +51,23 @@ TEST(Team, ABusyProcessTakesACore) {
 // core found free again gives it back at once.
 TEST(Team, GivesUpACoreOnlyToTwoCountsInARow) {
   sim::Team team;
-  team.last_count = 2;
-  EXPECT_EQ(sim::settle_team(team, 2), 2);
-  EXPECT_EQ(sim::settle_team(team, 1), 2) << "one count of a busy core";
-  EXPECT_EQ(sim::settle_team(team, 2), 2);
-  EXPECT_EQ(sim::settle_team(team, 1), 2);
-  EXPECT_EQ(sim::settle_team(team, 1), 1) << "two counts in a row";
-  EXPECT_EQ(sim::settle_team(team, 1), 1);
-  EXPECT_EQ(sim::settle_team(team, 2), 2) << "the core free again";
+  EXPECT_EQ(sim::settle_team(team, 2, 2), 2);
+  EXPECT_EQ(sim::settle_team(team, 2, 1), 2) << "one count of a busy core";
+  EXPECT_EQ(sim::settle_team(team, 2, 2), 2);
+  EXPECT_EQ(sim::settle_team(team, 2, 1), 2);
+  EXPECT_EQ(sim::settle_team(team, 2, 1), 1) << "two counts in a row";
+  EXPECT_EQ(sim::settle_team(team, 2, 1), 1);
+  EXPECT_EQ(sim::settle_team(team, 2, 2), 2) << "the core free again";
 }
 
 // The first count after the threads asked for change has no count before:
 // a busy core then waits for the next count too.
 TEST(Team, FirstCountIsSettledWithTheThreadsAsked) {
-  const long cores = sysconf(_SC_NPROCESSORS_ONLN);
-  if (cores < 2) GTEST_SKIP() << "one core: nothing to give up";
-  omp_set_num_threads(2);
   sim::Team team;
-  EXPECT_EQ(sim::team_size(team), 2) << "the first count, whatever it finds";
+  EXPECT_EQ(sim::settle_team(team, 2, 1), 2) << "the first count of a busy core";
+  EXPECT_EQ(sim::settle_team(team, 2, 1), 1) << "the second";
+  EXPECT_EQ(sim::settle_team(team, 3, 1), 3) << "the first count at another size";
+  EXPECT_EQ(sim::settle_team(team, 3, 2), 2) << "two counts below 3 in a row";
 }
 
 TEST(Team, FixedWhenNotFollowingFreeCores) {
