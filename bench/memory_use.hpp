@@ -40,7 +40,8 @@ inline double vector_bytes(const sim::World& w, double* grid) {
                          bytes(w.band_start) + bytes(w.thread_counts) + bytes(w.thread_window) +
                          bytes(w.thread_totals) + bytes(w.thread_bands) + bytes(w.band_sums) +
                          bytes(w.material_specs) + bytes(w.materials) + bytes(w.scene_index) +
-                         bytes(w.sort_scratch);
+                         bytes(w.sort_scratch) + bytes(w.sort_scratch_bytes) +
+                         bytes(w.sort_scratch_ints);
   if (grid) *grid = nodes;
   return points + nodes + scratch;
 }

@@ -18,9 +18,12 @@
 // threads wait for each other is counted in that phase). --scene NAME steps
 // scenarios/NAME.json instead of the column (REFINE must then be 1), from
 // its seeded state under its full gravity: a slope's window, unlike the
-// column's, is mostly air above its face.
+// column's, is mostly air above its face. --sorts N then times N sorts into
+// cell order of a copy of the world, each after one more step, whether due
+// or not: the sort alone, one figure per sort (the first ones size the
+// sort's scratch arrays), after the hash, which they do not touch.
 //   build/bench/phases [REFINE] [STEPS] [--own-strength] [--scene-order] [--mixed] [--threads N]
-//                      [--scene NAME]
+//                      [--scene NAME] [--sorts N]
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
@@ -56,12 +59,15 @@ struct Hash {
 
 int main(int argc, char** argv) {
   bool own = false, sort = true, mixed = false;
-  int threads = 1;
+  int threads = 1, sorts = 0;
   std::string scene;
   for (; argc > 1; --argc) {
     const std::string last = argv[argc - 1];
     if (argc > 2 && std::string(argv[argc - 2]) == "--threads") {
       threads = std::atoi(last.c_str());
+      --argc;
+    } else if (argc > 2 && std::string(argv[argc - 2]) == "--sorts") {
+      sorts = std::atoi(last.c_str());
       --argc;
     } else if (argc > 2 && std::string(argv[argc - 2]) == "--scene") {
       scene = last;
@@ -72,9 +78,11 @@ int main(int argc, char** argv) {
     else break;
   }
   const int refine = argc > 1 ? std::atoi(argv[1]) : 1, steps = argc > 2 ? std::atoi(argv[2]) : 200;
-  if (refine < 1 || steps < 1 || argc > 3 || threads < 1 || (!scene.empty() && refine != 1)) {
+  if (refine < 1 || steps < 1 || argc > 3 || threads < 1 || sorts < 0 ||
+      (!scene.empty() && refine != 1)) {
     std::fprintf(stderr, "usage: phases [REFINE >= 1] [STEPS >= 1] [--own-strength] "
-                         "[--scene-order] [--mixed] [--threads N >= 1] [--scene NAME, REFINE 1]\n");
+                         "[--scene-order] [--mixed] [--threads N >= 1] [--scene NAME, REFINE 1] "
+                         "[--sorts N >= 0]\n");
     return 2;
   }
   const sim::Scenario s = scene.empty() ? bench::granular_column(refine) : bench::load_scene(scene);
@@ -149,5 +157,18 @@ int main(int argc, char** argv) {
   const sim::StepReport sums = sim::sum_step_report(w);
   hash.add(&sums, sizeof sums);
   std::printf("hash %016llx\n", static_cast<unsigned long long>(hash.h));
+  if (sorts > 0) {
+    sim::World copy = w;
+    omp_set_num_threads(threads);  // the sort's team (team.hpp) is as large as the step's
+    std::printf("sorts, ns/pt:");
+    for (int k = 0; k < sorts; ++k) {
+      sim::step(copy, in, report);
+      const Clock::time_point start = Clock::now();
+      sim::sort_points_by_cell(copy);
+      const double sorted = std::chrono::duration<double>(Clock::now() - start).count();
+      std::printf(" %.1f", sorted / static_cast<double>(copy.points.size()) * 1e9);
+    }
+    std::printf("\n");
+  }
   return 0;
 }

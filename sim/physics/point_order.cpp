@@ -19,15 +19,21 @@ void gather(std::vector<T>& v, const std::vector<int>& from, std::vector<T>& scr
   v.swap(scratch);
 }
 
-// Every per-point array by `from`. The doubles share one scratch array kept
-// in the world; the bytes, the strengths and the scene index still allocate
-// theirs at every sort.
-void gather_all(World& w, const std::vector<int>& from) {
-  const int threads = team_size(w.team);
+// Every per-point array by `from`, each through the world's scratch array
+// of its kind, so that a sort allocates nothing once the first two have
+// sized them. Sorts of 6.5 M points on 2 threads took 6.0 to 16.4 ns per
+// point while each allocated the bytes' scratch and a new scene index
+// (faulted in and zeroed page by page) and filled the index on one thread;
+// 4.6 to 12.1 without (`bench/phases 16 10 --threads 2 --sorts 10`, issue 17,
+// twentieth pass, bench/README.md). The per-point strengths of a random
+// field still allocate theirs.
+void gather_all(World& w, const std::vector<int>& from, int threads) {
   for_each_point_array(w, [&](auto& v) {
     using T = typename std::decay_t<decltype(v)>::value_type;
     if constexpr (std::is_same_v<T, double>) {
       gather(v, from, w.sort_scratch, threads);
+    } else if constexpr (std::is_same_v<T, std::uint8_t>) {
+      gather(v, from, w.sort_scratch_bytes, threads);
     } else {
       std::vector<T> scratch;
       gather(v, from, scratch, threads);
@@ -38,14 +44,19 @@ void gather_all(World& w, const std::vector<int>& from) {
 }  // namespace
 
 void sort_points_by_cell(World& w) {
-  const std::size_t n = w.points.size();
-  if (w.order.size() != n) return;  // no step yet
-  gather_all(w, w.order);
-  std::vector<int> scene(n);
-  for (std::size_t s = 0; s < n; ++s)
-    scene[s] = w.scene_index.empty() ? w.order[s] : w.scene_index[w.order[s]];
+  const long n = static_cast<long>(w.points.size());
+  if (static_cast<long>(w.order.size()) != n) return;  // no step yet
+  const int threads = team_size(w.team);
+  gather_all(w, w.order, threads);
+  std::vector<int>& scene = w.sort_scratch_ints;
+  scene.resize(n);
+  const bool in_scene_order = w.scene_index.empty();
+#pragma omp parallel for num_threads(threads) schedule(static)
+  for (long s = 0; s < n; ++s) {
+    scene[s] = in_scene_order ? w.order[s] : w.scene_index[w.order[s]];
+    w.order[s] = static_cast<int>(s);
+  }
   w.scene_index.swap(scene);
-  for (std::size_t s = 0; s < n; ++s) w.order[s] = static_cast<int>(s);
 }
 
 std::vector<int> slots_in_scene_order(const World& w) {
@@ -56,7 +67,7 @@ std::vector<int> slots_in_scene_order(const World& w) {
 
 void restore_scene_order(World& w) {
   if (w.scene_index.empty()) return;
-  gather_all(w, slots_in_scene_order(w));
+  gather_all(w, slots_in_scene_order(w), team_size(w.team));
   if (w.order.size() == w.points.size())
     for (int& s : w.order) s = w.scene_index[s];
   w.scene_index.clear();

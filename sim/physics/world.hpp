@@ -4,6 +4,7 @@
 #pragma once
 
 #include <atomic>
+#include <cstdint>
 #include <stdexcept>
 #include <vector>
 
@@ -77,7 +78,11 @@ struct World {
   long step_serial = 0;           // steps located so far (prepare_locate)
   std::vector<double> band_sums;  // per band partial sums of the step's reductions
   Team team;                      // the step's threads (sim/physics/team.hpp)
-  std::vector<double> sort_scratch;  // one per-point array, for sort_points_by_cell
+  // One per-point array of each kind, for sort_points_by_cell: kept from sort
+  // to sort so that a sort allocates nothing (point_order.cpp).
+  std::vector<double> sort_scratch;
+  std::vector<std::uint8_t> sort_scratch_bytes;
+  std::vector<int> sort_scratch_ints;
 };
 
 // Visits every per-point array of the world that is in use (APIC's and the
