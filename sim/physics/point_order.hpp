@@ -22,9 +22,11 @@ namespace sim {
 
 // The time loop looks every kStepsPerSort steps, and sorts if more than
 // kSortAtDisorder of the points in the last step's order are not stored
-// right after the point before them. A sort costs about 20 ns per point at
-// 410 k points and 50 to 120 at 6.5 M (bench/phases, one thread), so points
-// that stay in their cells, as a slope at rest does, are not sorted again.
+// right after the point before them. A sort costs about 10 ns per point at
+// 410 k and at 6.5 M points (`bench/phases 4 40` and `16 10`, `--threads 1
+// --sorts 10`, sorts 3-10: 10.1-10.7 and 9.7-11.2; 20 and 50 to 120 before
+// 85eb75c), so points that stay in their cells, as a slope at rest does,
+// are not sorted again.
 constexpr long kStepsPerSort = 10;
 constexpr double kSortAtDisorder = 0.1;
 
