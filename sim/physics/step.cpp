@@ -6,6 +6,8 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <cstring>
+#include <type_traits>
 
 #include "sim/physics/apic.hpp"
 #include "sim/physics/bands.hpp"
@@ -91,13 +93,107 @@ void points_to_grid(World& w) {
   });
 }
 
+namespace {
+
+// The nodal phases below take a row's nodes eight at a time (V = Lane8, a
+// node a lane, M = Int8) and its last ones one at a time (V = double,
+// M = bool), each by one formula written for both. g++ 12 vectorized
+// neither loop written node by node ("no vectype" for the loads of the
+// grid's arrays), and the slope's window is mostly air whose nodes cost the
+// same as the soil's. Lanes and single nodes round alike, so the bits are
+// those of a node at a time.
+template <class V>
+V at(const NodeArray<double>& a, int k) {
+  if constexpr (std::is_same_v<V, double>) {
+    return a[k];
+  } else {
+    V v;
+    std::memcpy(&v, &a[k], sizeof v);
+    return v;
+  }
+}
+template <class V>
+void put(NodeArray<double>& a, int k, const V& v) {
+  std::memcpy(&a[k], &v, sizeof v);
+}
+// Whether a wall holds the component at node k (and the seven after it).
+template <class M>
+M held(const NodeArray<std::uint8_t>& fix, int k) {
+  if constexpr (std::is_same_v<M, bool>) {
+    return fix[k] != 0;
+  } else {
+    std::uint8_t bytes[8];
+    std::memcpy(bytes, &fix[k], sizeof bytes);
+    M m;
+    for (int l = 0; l < 8; ++l) m[l] = bytes[l] != 0 ? -1 : 0;
+    return m;
+  }
+}
+// Row j's window, eight nodes at a time while eight remain, then one by one.
+template <class Eight, class One>
+void along_row(const Grid& g, int j, Eight eight, One one) {
+  int k = g.node(g.i_begin, j);
+  const int end = g.node(g.i_end, j);
+  for (; k + 8 <= end; k += 8) eight(k);
+  for (; k < end; ++k) one(k);
+}
+
+// 1 / m_i, or 0 at a node without mass.
+template <class V>
+V inverse_mass(const V& m) {
+  return m > 0.0 ? 1.0 / m : V{};
+}
+
 // Walls hold nodal momentum components at zero (paper Section 6). Nodal
 // velocity v_i = p_i / m_i is what the strain increment of Eq. (31) reads.
 // The velocity a wall takes away is kept (in ax, ay) and handed to the points
 // with the step's acceleration: with the incremental update of Eq. (30) a
 // point would otherwise keep the speed a no-slip wall stopped, and a deposit
-// against a wall would never come to rest. The kinetic energy taken goes to
-// row_sums, row by row. Friction walls act after the holds.
+// against a wall would never come to rest. Returns the kinetic energy the
+// holds take from each node, m_i |dv_i|^2 / 2.
+template <class V, class M>
+V hold_momentum(Grid& g, int k) {
+  const M hx = held<M>(g.fix_x, k), hy = held<M>(g.fix_y, k);
+  const V inv = inverse_mass(at<V>(g.mass, k));
+  const V px = at<V>(g.px, k), py = at<V>(g.py, k);
+  const V ax = hx ? -px * inv : V{}, ay = hy ? -py * inv : V{};
+  const V kept_x = hx ? V{} : px, kept_y = hy ? V{} : py;
+  put(g.ax, k, ax);
+  put(g.ay, k, ay);
+  put(g.px, k, kept_x);
+  put(g.py, k, kept_y);
+  put(g.vx, k, kept_x * inv);
+  put(g.vy, k, kept_y * inv);
+  return 0.5 * (px * ax + py * ay);
+}
+
+// Eq. (28): p_i^{k+1} = p_i^k + dt f_i, with the force normal to a wall
+// taken away. The nodal acceleration handed to the points (Eq. 30) is the
+// whole velocity change of the step: force plus what the wall took away.
+template <class V, class M>
+void update_momentum(Grid& g, int k, double dt, double inv_dt) {
+  const M hx = held<M>(g.fix_x, k), hy = held<M>(g.fix_y, k);
+  const V inv = inverse_mass(at<V>(g.mass, k));
+  const V fx = hx ? V{} : at<V>(g.fx, k), fy = hy ? V{} : at<V>(g.fy, k);
+  const V px = at<V>(g.px, k) + dt * fx, py = at<V>(g.py, k) + dt * fy;
+  const V ax = at<V>(g.ax, k) * inv_dt + fx * inv, ay = at<V>(g.ay, k) * inv_dt + fy * inv;
+  put(g.fx, k, fx);
+  put(g.fy, k, fy);
+  put(g.px, k, px);
+  put(g.py, k, py);
+  put(g.ax, k, ax);
+  put(g.ay, k, ay);
+  put(g.held_ax, k, hx ? ax : V{});
+  put(g.held_ay, k, hy ? ay : V{});
+  put(g.vx, k, px * inv);
+  put(g.vy, k, py * inv);
+}
+
+}  // namespace
+
+// The holds above, row by row; the kinetic energy they take goes to
+// row_sums, node by node in the row's order. Friction walls act after the
+// holds.
 void enforce_walls_on_momentum(World& w) {
   WorkClock clock(w);
   Grid& g = w.grid;
@@ -106,17 +202,13 @@ void enforce_walls_on_momentum(World& w) {
   if (w.transfer == TransferScheme::Apic) grid_kinetic_by_row(g, first, last, kRowGridKineticMapped);
   for (int j = first; j < last; ++j) {
     double removed = 0;
-    for (int i = g.i_begin; i < g.i_end; ++i) {
-      const int k = g.node(i, j);
-      const double inv = g.mass[k] > 0.0 ? 1.0 / g.mass[k] : 0.0;
-      g.ax[k] = g.fix_x[k] ? -g.px[k] * inv : 0.0;
-      g.ay[k] = g.fix_y[k] ? -g.py[k] * inv : 0.0;
-      removed -= 0.5 * (g.px[k] * g.ax[k] + g.py[k] * g.ay[k]);
-      if (g.fix_x[k]) g.px[k] = 0.0;
-      if (g.fix_y[k]) g.py[k] = 0.0;
-      g.vx[k] = g.px[k] * inv;
-      g.vy[k] = g.py[k] * inv;
-    }
+    along_row(
+        g, j,
+        [&](int k) {
+          const Lane8 taken = hold_momentum<Lane8, Int8>(g, k);
+          for (int l = 0; l < 8; ++l) removed -= taken[l];
+        },
+        [&](int k) { removed -= hold_momentum<double, bool>(g, k); });
     // A held component's change is all it had: the grid loses what it takes.
     double* sums = &g.row_sums[(j - g.j_begin) * kRowSums];
     sums[kRowWallLoss] = removed;
@@ -127,32 +219,17 @@ void enforce_walls_on_momentum(World& w) {
   mark_own_bands(w, BandMark::Walls);
 }
 
-// Eq. (28): p_i^{k+1} = p_i^k + dt f_i. Walls take the force normal to them;
-// friction walls then act on p_i^{k+1}.
-// The nodal acceleration handed to the points (Eq. 30) is the whole velocity
-// change of the step: force plus what the wall took away.
+// Eq. (28) on the thread's rows; friction walls then act on p_i^{k+1}.
 void update_nodal_momentum(World& w, double dt) {
   WorkClock clock(w);
   Grid& g = w.grid;
   const double inv_dt = 1.0 / dt;
   int first, last;
   own_rows(w, first, last);
-  for (int j = first; j < last; ++j) {
-    for (int i = g.i_begin; i < g.i_end; ++i) {
-      const int k = g.node(i, j);
-      if (g.fix_x[k]) g.fx[k] = 0.0;
-      if (g.fix_y[k]) g.fy[k] = 0.0;
-      g.px[k] += dt * g.fx[k];
-      g.py[k] += dt * g.fy[k];
-      const double inv = g.mass[k] > 0.0 ? 1.0 / g.mass[k] : 0.0;
-      g.ax[k] = g.ax[k] * inv_dt + g.fx[k] * inv;
-      g.ay[k] = g.ay[k] * inv_dt + g.fy[k] * inv;
-      g.held_ax[k] = g.fix_x[k] ? g.ax[k] : 0.0;
-      g.held_ay[k] = g.fix_y[k] ? g.ay[k] : 0.0;
-      g.vx[k] = g.px[k] * inv;
-      g.vy[k] = g.py[k] * inv;
-    }
-  }
+  for (int j = first; j < last; ++j)
+    along_row(
+        g, j, [&](int k) { update_momentum<Lane8, Int8>(g, k, dt, inv_dt); },
+        [&](int k) { update_momentum<double, bool>(g, k, dt, inv_dt); });
   if (!g.friction_walls.empty()) friction_walls_on_update(g, first, last, dt);
   if (w.transfer == TransferScheme::Apic) grid_kinetic_by_row(g, first, last, kRowGridKineticUpdated);
   clock.finish();
