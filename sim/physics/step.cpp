@@ -149,8 +149,8 @@ V inverse_mass(const V& m) {
 // The velocity a wall takes away is kept (in ax, ay) and handed to the points
 // with the step's acceleration: with the incremental update of Eq. (30) a
 // point would otherwise keep the speed a no-slip wall stopped, and a deposit
-// against a wall would never come to rest. Returns the kinetic energy the
-// holds take from each node, m_i |dv_i|^2 / 2.
+// against a wall would never come to rest. Returns p_i . dv_i / 2 at each
+// node: the kinetic energy m_i |dv_i|^2 / 2 the holds take, negated.
 template <class V, class M>
 V hold_momentum(Grid& g, int k) {
   const M hx = held<M>(g.fix_x, k), hy = held<M>(g.fix_y, k);
