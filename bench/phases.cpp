@@ -85,6 +85,10 @@ int main(int argc, char** argv) {
                          "[--sorts N >= 0]\n");
     return 2;
   }
+  // Everything outside the timed phases' own region (the warm-up steps, the
+  // sorts) takes its team from omp_get_max_threads() (sim/physics/team.hpp):
+  // as many threads as the phases, or "--threads 1" sorted on two.
+  omp_set_num_threads(threads);
   const sim::Scenario s = scene.empty() ? bench::granular_column(refine) : bench::load_scene(scene);
   sim::World w = sim::make_world(s);
   if (own) {
@@ -159,7 +163,6 @@ int main(int argc, char** argv) {
   std::printf("hash %016llx\n", static_cast<unsigned long long>(hash.h));
   if (sorts > 0) {
     sim::World copy = w;
-    omp_set_num_threads(threads);  // the sort's team (team.hpp) is as large as the step's
     std::printf("sorts, ns/pt:");
     for (int k = 0; k < sorts; ++k) {
       sim::step(copy, in, report);
