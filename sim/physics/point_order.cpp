@@ -25,8 +25,8 @@ void gather(std::vector<T>& v, const std::vector<int>& from, std::vector<T>& scr
 // point while each allocated the bytes' scratch and a new scene index
 // (faulted in and zeroed page by page) and filled the index on one thread;
 // 4.6 to 12.1 without (`bench/phases 16 10 --threads 2 --sorts 10`, issue 17,
-// twentieth pass, bench/README.md). The per-point strengths of a random
-// field still allocate theirs.
+// twentieth pass, bench/README.md). A random field's surfaces have a
+// scratch array of their own, kept as well.
 void gather_all(World& w, const std::vector<int>& from, int threads) {
   for_each_point_array(w, [&](auto& v) {
     using T = typename std::decay_t<decltype(v)>::value_type;
@@ -35,8 +35,8 @@ void gather_all(World& w, const std::vector<int>& from, int threads) {
     } else if constexpr (std::is_same_v<T, std::uint8_t>) {
       gather(v, from, w.sort_scratch_bytes, threads);
     } else {
-      std::vector<T> scratch;
-      gather(v, from, scratch, threads);
+      static_assert(std::is_same_v<T, MohrCoulomb>, "a per-point array of a new kind: give it a scratch");
+      gather(v, from, w.sort_scratch_surfaces, threads);
     }
   });
 }

@@ -83,6 +83,7 @@ struct World {
   std::vector<double> sort_scratch;
   std::vector<std::uint8_t> sort_scratch_bytes;
   std::vector<int> sort_scratch_ints;
+  std::vector<MohrCoulomb> sort_scratch_surfaces;  // a random field's (point_strength.hpp)
 };
 
 // Visits every per-point array of the world that is in use (APIC's and the
