@@ -104,13 +104,10 @@ namespace {
 // those of a node at a time.
 template <class V>
 V at(const NodeArray<double>& a, int k) {
-  if constexpr (std::is_same_v<V, double>) {
+  if constexpr (std::is_same_v<V, double>)
     return a[k];
-  } else {
-    V v;
-    std::memcpy(&v, &a[k], sizeof v);
-    return v;
-  }
+  else
+    return load8(&a[k]);
 }
 template <class V>
 void put(NodeArray<double>& a, int k, const V& v) {
