@@ -16,13 +16,19 @@ constexpr double kBaseMemoryBytes = 64e6;  // the process with nothing to simula
 // sorting).
 constexpr double kBytesPerPoint = 370;
 // Per point once a stage sets a random field: its own cohesion, friction
-// angle and Mohr-Coulomb surface (sim/physics/point_strength.hpp) and the
-// field's value at the point. Drawing the field takes up to
-// field_draw_peak_bytes of its lattice (sim/scene/random_field.hpp), freed
-// before the points' strengths are made: a run needs the larger of the two.
-// With kMaxLatticeNodes each way, the draw holds both factors and three
-// lattice arrays.
-constexpr double kBytesPerPointWithField = 3 * sizeof(double) + sizeof(MohrCoulomb);
+// angle and the field's value there; its own Mohr-Coulomb surface twice, once
+// in the World and once in the sort's scratch (World::sort_scratch_surfaces,
+// kept between sorts); and the watchdog's saved cohesion and friction angle.
+// Measured: a 4,000,000-point Mohr-Coulomb square (h = 0.01 m, a 2000 x 2000
+// lattice whose 160 MB draw is the smaller term) with a random friction angle
+// peaked 545 B per point above the same run without it (3,529,188 against
+// 1,401,840 KiB, `landslide run --threads 2` under /usr/bin/time -v, 55
+// steps; bench/README.md, issue 17's twenty-second pass); this sum is 552.
+// Drawing the field takes up to field_draw_peak_bytes of its lattice
+// (sim/scene/random_field.hpp), freed before the points' strengths are made:
+// a run needs the larger of the two. With kMaxLatticeNodes each way, the draw
+// holds both factors and three lattice arrays.
+constexpr double kBytesPerPointWithField = 5 * sizeof(double) + 2 * sizeof(MohrCoulomb);
 // The lattice's correlation matrices are nx by nx and ny by ny doubles.
 constexpr double kMaxLatticeNodes = 4000;
 constexpr double kMaxFieldDrawBytes =
