@@ -41,7 +41,7 @@ inline double vector_bytes(const sim::World& w, double* grid) {
                          bytes(w.thread_totals) + bytes(w.thread_bands) + bytes(w.band_sums) +
                          bytes(w.material_specs) + bytes(w.materials) + bytes(w.scene_index) +
                          bytes(w.sort_scratch) + bytes(w.sort_scratch_bytes) +
-                         bytes(w.sort_scratch_ints) + bytes(w.sort_scratch_surfaces);
+                         bytes(w.sort_scratch_ints);
   if (grid) *grid = nodes;
   return points + nodes + scratch;
 }

@@ -34,7 +34,7 @@ struct WorldPoints {
   bool yielded(std::size_t i) const { return w.points.yielded[i] != 0; }
   const std::vector<sim::MaterialConstants>& materials() const { return w.materials; }
   // Its own where a random field set it, else its material's (plastic points).
-  const sim::MohrCoulomb& mohr_coulomb(std::size_t i) const { return sim::point_mohr_coulomb(w, i); }
+  sim::MohrCoulomb mohr_coulomb(std::size_t i) const { return sim::point_mohr_coulomb(w, i); }
 };
 
 // A state read back from a .vtu file.

@@ -14,6 +14,7 @@
 
 #include "sim/physics/gimp.hpp"
 #include "sim/physics/mohr_coulomb.hpp"
+#include "sim/physics/point_strength.hpp"
 
 namespace sim {
 
@@ -53,6 +54,24 @@ inline MohrCoulombLanes surface_lanes(const MohrCoulomb* const surfaces[8]) {
   c.side2 = lanes_of(surfaces, &MohrCoulomb::side2);
   c.project1 = lanes_of(surfaces, &MohrCoulomb::project1);
   c.project2 = lanes_of(surfaces, &MohrCoulomb::project2);
+  return c;
+}
+
+// The constants of eight points' own surfaces (point_strength.hpp): `load`
+// gives the eight points' lanes of one of its arrays.
+template <class Load>
+MohrCoulombLanes surface_lanes(const SurfaceArrays& a, Load load) {
+  MohrCoulombLanes c;
+  c.k = load(a.k);
+  c.sigma_c = load(a.sigma_c);
+  c.apex = load(a.apex);
+  for (int i = 0; i < 3; ++i) {
+    c.plane_corrector[i] = load(a.plane_corrector[i]);
+    c.side1[i] = load(a.side1[i]);
+    c.side2[i] = load(a.side2[i]);
+    c.project1[i] = load(a.project1[i]);
+    c.project2[i] = load(a.project2[i]);
+  }
   return c;
 }
 

@@ -25,21 +25,16 @@ void gather(std::vector<T>& v, const std::vector<int>& from, std::vector<T>& scr
 // point while each allocated the bytes' scratch and a new scene index
 // (faulted in and zeroed page by page) and filled the index on one thread;
 // 4.6 to 12.1 without (`bench/phases 16 10 --threads 2 --sorts 10`, issue 17,
-// twentieth pass, bench/README.md). A random field's surfaces (256 B a
-// point) have a scratch array of their own, kept as well: allocated and
-// value-initialised at every sort, they made a sort of 410 k points with
-// their own surfaces cost 680-898 ns per point, 35-39 once kept
-// (`bench/phases 4 40 --threads 1 --own-strength --sorts 10`, twenty-first pass).
+// twentieth pass, bench/README.md). A random field's surfaces are arrays of
+// doubles too (point_strength.hpp), moved through the same scratch.
 void gather_all(World& w, const std::vector<int>& from, int threads) {
   for_each_point_array(w, [&](auto& v) {
     using T = typename std::decay_t<decltype(v)>::value_type;
     if constexpr (std::is_same_v<T, double>) {
       gather(v, from, w.sort_scratch, threads);
-    } else if constexpr (std::is_same_v<T, std::uint8_t>) {
-      gather(v, from, w.sort_scratch_bytes, threads);
     } else {
-      static_assert(std::is_same_v<T, MohrCoulomb>, "a per-point array of a new kind: give it a scratch");
-      gather(v, from, w.sort_scratch_surfaces, threads);
+      static_assert(std::is_same_v<T, std::uint8_t>, "a per-point array of a new kind: give it a scratch");
+      gather(v, from, w.sort_scratch_bytes, threads);
     }
   });
 }

@@ -6,19 +6,41 @@ namespace sim {
 
 namespace {
 
+// Point p's entries of the surface arrays: the constants of `mc`.
+void put_surface(SurfaceArrays& a, std::size_t p, const MohrCoulomb& mc) {
+  a.k[p] = mc.k;
+  a.sigma_c[p] = mc.sigma_c;
+  a.apex[p] = mc.apex;
+  for (int i = 0; i < 3; ++i) {
+    a.plane_corrector[i][p] = mc.plane_corrector[i];
+    a.side1[i][p] = mc.side1[i];
+    a.side2[i][p] = mc.side2[i];
+    a.project1[i][p] = mc.project1[i];
+    a.project2[i][p] = mc.project2[i];
+  }
+}
+
+// n entries in every surface array, each point's a default surface (the
+// linear-elastic points keep it; it is never used).
+void size_surfaces(SurfaceArrays& a, std::size_t n) {
+  for_each_surface_array(a, [n](std::vector<double>& v) { v.assign(n, 0.0); });
+  const MohrCoulomb none{};
+  for (std::size_t p = 0; p < n; ++p) put_surface(a, p, none);
+}
+
 // First field of the run: every point starts from its material's values.
 void start_point_strength(World& w) {
   PointStrength& s = w.strength;
   const std::size_t n = w.points.size();
   s.cohesion.assign(n, 0.0);
   s.friction_angle.assign(n, 0.0);
-  s.mohr_coulomb.assign(n, MohrCoulomb{});
+  size_surfaces(s.surfaces, n);
   for (std::size_t p = 0; p < n; ++p) {
     const MaterialSpec& m = w.material_specs[w.points.material[p]];
     if (m.model != MaterialModel::MohrCoulomb) continue;
     s.cohesion[p] = m.cohesion;
     s.friction_angle[p] = m.friction_angle;
-    s.mohr_coulomb[p] = w.materials[w.points.material[p]].mohr_coulomb;
+    put_surface(s.surfaces, p, w.materials[w.points.material[p]].mohr_coulomb);
   }
 }
 
@@ -28,7 +50,7 @@ void rebuild_material(World& w, int material) {
   if (!m.plastic) return;
   for (std::size_t p = 0; p < w.points.size(); ++p)
     if (w.points.material[p] == material)
-      s.mohr_coulomb[p] = m.mohr_coulomb.with_strength(s.cohesion[p], s.friction_angle[p]);
+      put_surface(s.surfaces, p, m.mohr_coulomb.with_strength(s.cohesion[p], s.friction_angle[p]));
 }
 
 std::vector<double>& values_of(PointStrength& s, const std::string& property) {
@@ -60,12 +82,22 @@ void follow_material_change(World& w, int material, const std::string& property)
 
 void rebuild_point_strength(World& w) {
   if (!w.strength.active()) return;
-  for (std::size_t m = 0; m < w.material_specs.size(); ++m) rebuild_material(w, static_cast<int>(m));
+  size_surfaces(w.strength.surfaces, w.points.size());
+  for (std::size_t m = 0; m < w.material_specs.size(); ++m)
+    rebuild_material(w, static_cast<int>(m));
 }
 
-const MohrCoulomb& point_mohr_coulomb(const World& w, std::size_t p) {
-  return w.strength.active() ? w.strength.mohr_coulomb[p]
-                             : w.materials[w.points.material[p]].mohr_coulomb;
+// A point whose strength is its material's takes the material's surface
+// itself, bit for bit what the step holds for it (start_point_strength).
+MohrCoulomb point_mohr_coulomb(const World& w, std::size_t p) {
+  const int material = w.points.material[p];
+  const MaterialConstants& m = w.materials[material];
+  const MaterialSpec& spec = w.material_specs[material];
+  const PointStrength& s = w.strength;
+  if (!s.active() || !m.plastic ||
+      (s.cohesion[p] == spec.cohesion && s.friction_angle[p] == spec.friction_angle))
+    return m.mohr_coulomb;
+  return m.mohr_coulomb.with_strength(s.cohesion[p], s.friction_angle[p]);
 }
 
 }  // namespace sim

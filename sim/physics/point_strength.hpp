@@ -10,6 +10,7 @@
 // to them once per step, null without a field (point_update.cpp).
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -21,15 +22,39 @@ namespace sim {
 
 struct World;
 
+// The constants of each point's return that the step reads (the members of
+// MohrCoulombLanes, mohr_coulomb_return.hpp), one array of doubles each, so
+// that eight points stored one after another load each as one vector and
+// the sort moves them through its scratch array of doubles. As one
+// 256-byte MohrCoulomb a point, the step gathered 144 doubles from eight
+// structs for every group, and the sort held a second copy of them all
+// (bench/README.md, issue 17's twenty-second pass).
+struct SurfaceArrays {
+  std::vector<double> k, sigma_c, apex;
+  std::array<std::vector<double>, 3> plane_corrector, side1, side2, project1, project2;
+};
+
 struct PointStrength {
   // Empty until a field is set; then one entry per point. Points of a
   // material without a field hold its own values; linear-elastic points
-  // hold zeros and a default return that is never used.
+  // hold zeros and a default surface that is never used.
   std::vector<double> cohesion;        // Pa
   std::vector<double> friction_angle;  // rad
-  std::vector<MohrCoulomb> mohr_coulomb;
-  bool active() const { return !mohr_coulomb.empty(); }
+  SurfaceArrays surfaces;
+  bool active() const { return !cohesion.empty(); }
 };
+
+// Visits the arrays of `s` (SurfaceArrays or const SurfaceArrays).
+template <class S, class Visit>
+void for_each_surface_array(S& s, Visit visit) {
+  static_assert(sizeof(SurfaceArrays) == 18 * sizeof(std::vector<double>),
+                "an array was added to SurfaceArrays: visit it here");
+  visit(s.k);
+  visit(s.sigma_c);
+  visit(s.apex);
+  for (auto* a : {&s.plane_corrector, &s.side1, &s.side2, &s.project1, &s.project2})
+    for (auto& v : *a) visit(v);
+}
 
 // Sets `property` ("cohesion" or "friction_angle") of every point of
 // `material` to values[p] (one value per point; others are not read), and
@@ -47,7 +72,8 @@ void follow_material_change(World& w, int material, const std::string& property)
 // specs (after a state with per-point values was restored).
 void rebuild_point_strength(World& w);
 
-// The Mohr-Coulomb return of point p: its own where a field is set, else its material's.
-const MohrCoulomb& point_mohr_coulomb(const World& w, std::size_t p);
+// The Mohr-Coulomb surface of point p: its own where a field is set, else
+// its material's. Made again from the point's strength, so by value.
+MohrCoulomb point_mohr_coulomb(const World& w, std::size_t p);
 
 }  // namespace sim

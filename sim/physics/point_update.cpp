@@ -28,6 +28,38 @@ struct MaterialLanes {
 // Eight bytes, one per point: materials or yield flags of a group.
 typedef std::uint8_t Bytes8 __attribute__((vector_size(8)));
 
+// Whether eight points are stored one after another, as most groups of a
+// band are while the points are stored in cell order (point_order.hpp): their
+// arrays are then read and written as vectors instead of lane by lane.
+bool stored_in_a_run(const int q[8], int count) {
+  if (count < 8) return false;
+  for (int l = 1; l < 8; ++l)
+    if (q[l] != q[0] + l) return false;
+  return true;
+}
+// The values of eight points in array `a`, one a lane (V: Lane8 of doubles,
+// Bytes8 of bytes), and their store back, count lanes.
+template <class V, class T>
+V lanes_at(const T* a, const int q[8], bool run) {
+  static_assert(sizeof(V) == 8 * sizeof(T), "eight lanes of T");
+  V v;
+  if (run) {
+    std::memcpy(&v, a + q[0], sizeof v);
+    return v;
+  }
+  for (int l = 0; l < 8; ++l) v[l] = a[q[l]];
+  return v;
+}
+template <class T, class V>
+void store_lanes(T* a, const int q[8], int count, bool run, const V& v) {
+  static_assert(sizeof(V) == 8 * sizeof(T), "eight lanes of T");
+  if (run) {
+    std::memcpy(a + q[0], &v, sizeof v);
+    return;
+  }
+  for (int l = 0; l < count; ++l) a[q[l]] = v[l];
+}
+
 // Remade only when the group of eight points q has other materials than the
 // group before, or surfaces of its own (a random field's): a scene of one
 // soil makes it once. The materials are compared as one word of their eight
@@ -39,8 +71,8 @@ struct MaterialLanesCache {
   std::uint64_t kinds = 0;  // the materials the lanes hold, one byte each
   bool held = false;
 
-  const MaterialLanes& get(const World& w, const Bytes8& materials, const int q[8],
-                           const MohrCoulomb* own) {
+  const MaterialLanes& get(const World& w, const Bytes8& materials, const int q[8], bool run,
+                           const SurfaceArrays* own) {
     std::uint64_t now;
     std::memcpy(&now, &materials, sizeof now);
     if (held && now == kinds && !own) return lanes;
@@ -52,13 +84,16 @@ struct MaterialLanesCache {
     // bytes out of the vector made the random-field case 4 ns per point slower.
     for (int l = 0; l < 8; ++l) {
       m[l] = &w.materials[w.points.material[q[l]]];
-      s[l] = own ? &own[q[l]] : &m[l]->mohr_coulomb;
+      s[l] = &m[l]->mohr_coulomb;
     }
     lanes.lambda = lanes_of(m, &MaterialConstants::lambda);
     lanes.shear = lanes_of(m, &MaterialConstants::shear);
     lanes.critical_density = lanes_of(m, &MaterialConstants::critical_density);
     for (int l = 0; l < 8; ++l) lanes.plastic[l] = m[l]->plastic ? -1 : 0;
-    lanes.mohr_coulomb = surface_lanes(s);
+    const auto own_lanes = [&](const std::vector<double>& a) {
+      return lanes_at<Lane8>(a.data(), q, run);
+    };
+    lanes.mohr_coulomb = own ? surface_lanes(*own, own_lanes) : surface_lanes(s);
     return lanes;
   }
 };
@@ -99,38 +134,6 @@ void gradient_lanes(const Lane8 pairs[4], Lane8 L[4]) {
   L[3] = __builtin_shufflevector(yx_yy01, yx_yy23, 4, 5, 6, 7, 12, 13, 14, 15);
 }
 
-// Whether eight points are stored one after another, as most groups of a
-// band are while the points are stored in cell order (point_order.hpp): their
-// arrays are then read and written as vectors instead of lane by lane.
-bool stored_in_a_run(const int q[8], int count) {
-  if (count < 8) return false;
-  for (int l = 1; l < 8; ++l)
-    if (q[l] != q[0] + l) return false;
-  return true;
-}
-// The values of eight points in array `a`, one a lane (V: Lane8 of doubles,
-// Bytes8 of bytes), and their store back, count lanes.
-template <class V, class T>
-V lanes_at(const T* a, const int q[8], bool run) {
-  static_assert(sizeof(V) == 8 * sizeof(T), "eight lanes of T");
-  V v;
-  if (run) {
-    std::memcpy(&v, a + q[0], sizeof v);
-    return v;
-  }
-  for (int l = 0; l < 8; ++l) v[l] = a[q[l]];
-  return v;
-}
-template <class T, class V>
-void store_lanes(T* a, const int q[8], int count, bool run, const V& v) {
-  static_assert(sizeof(V) == 8 * sizeof(T), "eight lanes of T");
-  if (run) {
-    std::memcpy(a + q[0], &v, sizeof v);
-    return;
-  }
-  for (int l = 0; l < count; ++l) a[q[l]] = v[l];
-}
-
 // What the force scatter needs of eight points just updated, one lane each,
 // handed over in registers: their new stress, their volume after Eq. (25)
 // and their mass, so the scatter reloads nothing and divides nothing.
@@ -149,7 +152,7 @@ struct UpdatedLanes {
 // selects, not branches: the step took 45 ns per point in this phase one
 // point at a time (stress and force, granular column, one thread), much of
 // it on branches that a yielding soil takes at random.
-void update_eight_stresses(World& w, const int* p, int count, double dt, const MohrCoulomb* own,
+void update_eight_stresses(World& w, const int* p, int count, double dt, const SurfaceArrays* own,
                            MaterialLanesCache& cache, UpdatedLanes& out) {
   Particles& pts = w.points;
   int q[8];
@@ -165,7 +168,7 @@ void update_eight_stresses(World& w, const int* p, int count, double dt, const M
   gradient_lanes(pairs, L);
   const Bytes8 flags = lanes_at<Bytes8>(pts.yielded.data(), q, run);
   const Int8 was_yielded = __builtin_convertvector(flags, Int8);
-  const MaterialLanes& m = cache.get(w, lanes_at<Bytes8>(pts.material.data(), q, run), q, own);
+  const MaterialLanes& m = cache.get(w, lanes_at<Bytes8>(pts.material.data(), q, run), q, run, own);
   const Lane8 &Lxx = L[0], &Lxy = L[1], &Lyx = L[2], &Lyy = L[3];
   const StrainOf<Lane8> de{dt * Lxx, dt * Lyy, 0.5 * dt * (Lxy + Lyx)};  // Eq. (31)
   const StressOf<Lane8> before{
@@ -244,14 +247,14 @@ double walled_squared(const Grid& g, const StencilWeights& st) {
   return wx * wx + wy * wy;
 }
 
-const MohrCoulomb* own_strength(const World& w) {
-  return w.strength.active() ? w.strength.mohr_coulomb.data() : nullptr;
+const SurfaceArrays* own_strength(const World& w) {
+  return w.strength.active() ? &w.strength.surfaces : nullptr;
 }
 
 }  // namespace
 
 double update_stress(World& w, double dt) {
-  const MohrCoulomb* own = own_strength(w);
+  const SurfaceArrays* own = own_strength(w);
   MaterialLanesCache cache;
   const int n = static_cast<int>(w.points.size());
   double total = 0;
@@ -272,7 +275,7 @@ double update_stress(World& w, double dt) {
 // grouping the points changes no result: each point's force is still added
 // in the band's order, and its work summed in that order.
 void update_stress_and_forces(World& w, const StepInput& in) {
-  const MohrCoulomb* own = own_strength(w);
+  const SurfaceArrays* own = own_strength(w);
   scatter_own_bands(w, BandMark::Forces, BandMark::Walls, [&](int band) {
     MaterialLanesCache cache;
     NodeSumsSideBySide forces{w.grid.fx.data(), w.grid.fy.data(), w.grid.stride};

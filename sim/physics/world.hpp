@@ -83,7 +83,6 @@ struct World {
   std::vector<double> sort_scratch;
   std::vector<std::uint8_t> sort_scratch_bytes;
   std::vector<int> sort_scratch_ints;
-  std::vector<MohrCoulomb> sort_scratch_surfaces;  // a random field's (point_strength.hpp)
 };
 
 // Visits every per-point array of the world that is in use (APIC's and the
@@ -102,12 +101,12 @@ void for_each_point_array(W& w, Visit visit) {
   visit(p.material);
   visit(p.yielded);
   auto& s = w.strength;
-  static_assert(sizeof(PointStrength) == 3 * sizeof(std::vector<double>),
+  static_assert(sizeof(PointStrength) == sizeof(SurfaceArrays) + 2 * sizeof(std::vector<double>),
                 "a per-point array was added to PointStrength: visit it here");
   if (s.active()) {
     visit(s.cohesion);
     visit(s.friction_angle);
-    visit(s.mohr_coulomb);
+    for_each_surface_array(s.surfaces, visit);
   }
 }
 

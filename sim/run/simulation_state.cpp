@@ -256,7 +256,6 @@ void Simulation::restore_state(const std::string& bytes, const std::string& labe
   if (rd.get<bool>()) {
     strength.cohesion = rd.get_vector<double>(n, "the per-point cohesion");
     strength.friction_angle = rd.get_vector<double>(n, "the per-point friction angle");
-    strength.mohr_coulomb.assign(n, MohrCoulomb{});
     rebuild_point_strength(world_);
   }
   if (!rd.at_end()) rd.fail("bytes after the end of the state");

@@ -15,20 +15,22 @@ constexpr double kBaseMemoryBytes = 64e6;  // the process with nothing to simula
 // included (sim/physics/point_order.hpp: 12 B per point kept, 5 more while
 // sorting).
 constexpr double kBytesPerPoint = 370;
-// Per point once a stage sets a random field: its own cohesion, friction
-// angle and the field's value there; its own Mohr-Coulomb surface twice, once
-// in the World and once in the sort's scratch (World::sort_scratch_surfaces,
-// kept between sorts); and the watchdog's saved cohesion and friction angle.
-// Measured: a 4,000,000-point Mohr-Coulomb square (h = 0.01 m, a 2000 x 2000
-// lattice whose 160 MB draw is the smaller term) with a random friction angle
-// peaked 545 B per point above the same run without it (3,529,188 against
-// 1,401,840 KiB, `landslide run --threads 2` under /usr/bin/time -v, 55
-// steps; bench/README.md, issue 17's twenty-second pass); this sum is 552.
-// Drawing the field takes up to field_draw_peak_bytes of its lattice
-// (sim/scene/random_field.hpp), freed before the points' strengths are made:
-// a run needs the larger of the two. With kMaxLatticeNodes each way, the draw
-// holds both factors and three lattice arrays.
-constexpr double kBytesPerPointWithField = 5 * sizeof(double) + 2 * sizeof(MohrCoulomb);
+// Per point once a stage sets a random field: its own cohesion and friction
+// angle, the 18 constants of its own Mohr-Coulomb surface that the step
+// reads (point_strength.hpp) and the watchdog's saved cohesion and friction
+// angle, 176 B held for the run, and for a while the field's values. Measured:
+// a 4,000,000-point Mohr-Coulomb square (h = 0.01 m, a 2000 x 2000 lattice
+// whose 160 MB draw is the smaller term) with a random friction angle peaked
+// 198.5 B per point above the same run without it (2,176,896 against
+// 1,401,636 KiB, `landslide run --threads 2` under /usr/bin/time -v, 55
+// steps; bench/README.md, issue 17's twenty-second pass). Before the surface
+// went into arrays it was held whole and again in the sort's scratch, 545 B
+// measured. Counted as 210. Drawing the field takes up to
+// field_draw_peak_bytes of its lattice (sim/scene/random_field.hpp), freed
+// before the points' strengths are made: a run needs the larger of the two.
+// With kMaxLatticeNodes each way, the draw holds both factors and three
+// lattice arrays.
+constexpr double kBytesPerPointWithField = 210;
 // The lattice's correlation matrices are nx by nx and ny by ny doubles.
 constexpr double kMaxLatticeNodes = 4000;
 constexpr double kMaxFieldDrawBytes =

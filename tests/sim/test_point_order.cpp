@@ -127,7 +127,12 @@ TEST(PointOrder, SortAndRestoreGiveBackEveryArray) {
   EXPECT_TRUE(same_bytes(p.yielded, q.yielded));
   EXPECT_TRUE(same_bytes(w.strength.cohesion, before.strength.cohesion));
   EXPECT_TRUE(same_bytes(w.strength.friction_angle, before.strength.friction_angle));
-  EXPECT_TRUE(same_bytes(w.strength.mohr_coulomb, before.strength.mohr_coulomb));
+  std::vector<const std::vector<double>*> now, was;
+  sim::for_each_surface_array(w.strength.surfaces, [&](const auto& v) { now.push_back(&v); });
+  sim::for_each_surface_array(before.strength.surfaces, [&](const auto& v) { was.push_back(&v); });
+  ASSERT_EQ(now.size(), 18u);
+  for (std::size_t k = 0; k < now.size(); ++k)
+    EXPECT_TRUE(same_bytes(*now[k], *was[k])) << "surface array " << k;
 }
 
 // The time loop sorts every kStepsPerSort steps, and only points that have
