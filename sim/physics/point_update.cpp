@@ -60,12 +60,13 @@ void store_lanes(T* a, const int q[8], int count, bool run, const V& v) {
   for (int l = 0; l < count; ++l) a[q[l]] = v[l];
 }
 
-// Remade only when the group of eight points q has other materials than the
-// group before, or surfaces of its own (a random field's): a scene of one
-// soil makes it once. The materials are compared as one word of their eight
-// indices (`materials`, the points' bytes), without looking them up: in
-// turns with cb17895 the column's stress phase went from 23.1 to 21.6 ns per
-// point on one thread (issue 17, eleventh pass).
+// The materials' constants are remade only when the group of eight points q
+// has other materials than the group before: a scene of one soil makes them
+// once. The materials are compared as one word of their eight indices
+// (`materials`, the points' bytes), without looking them up: in turns with
+// cb17895 the column's stress phase went from 23.1 to 21.6 ns per point on
+// one thread (issue 17, eleventh pass). Surfaces of the points' own (a
+// random field's) are loaded for every group.
 struct MaterialLanesCache {
   MaterialLanes lanes;
   std::uint64_t kinds = 0;  // the materials the lanes hold, one byte each
@@ -75,25 +76,27 @@ struct MaterialLanesCache {
                            const SurfaceArrays* own) {
     std::uint64_t now;
     std::memcpy(&now, &materials, sizeof now);
-    if (held && now == kinds && !own) return lanes;
-    kinds = now;
-    held = true;
-    const MaterialConstants* m[8];
-    const MohrCoulomb* s[8];
-    // Looked up from the points again, not from `materials`: taking the
-    // bytes out of the vector made the random-field case 4 ns per point slower.
-    for (int l = 0; l < 8; ++l) {
-      m[l] = &w.materials[w.points.material[q[l]]];
-      s[l] = &m[l]->mohr_coulomb;
+    if (!held || now != kinds) {
+      kinds = now;
+      held = true;
+      const MaterialConstants* m[8];
+      const MohrCoulomb* s[8];
+      // Looked up from the points again, not from `materials`: taking the bytes
+      // out of the vector made the random-field case 4 ns per point slower.
+      for (int l = 0; l < 8; ++l) {
+        m[l] = &w.materials[w.points.material[q[l]]];
+        s[l] = &m[l]->mohr_coulomb;
+      }
+      lanes.lambda = lanes_of(m, &MaterialConstants::lambda);
+      lanes.shear = lanes_of(m, &MaterialConstants::shear);
+      lanes.critical_density = lanes_of(m, &MaterialConstants::critical_density);
+      for (int l = 0; l < 8; ++l) lanes.plastic[l] = m[l]->plastic ? -1 : 0;
+      if (!own) lanes.mohr_coulomb = surface_lanes(s);
     }
-    lanes.lambda = lanes_of(m, &MaterialConstants::lambda);
-    lanes.shear = lanes_of(m, &MaterialConstants::shear);
-    lanes.critical_density = lanes_of(m, &MaterialConstants::critical_density);
-    for (int l = 0; l < 8; ++l) lanes.plastic[l] = m[l]->plastic ? -1 : 0;
     const auto own_lanes = [&](const std::vector<double>& a) {
       return lanes_at<Lane8>(a.data(), q, run);
     };
-    lanes.mohr_coulomb = own ? surface_lanes(*own, own_lanes) : surface_lanes(s);
+    if (own) lanes.mohr_coulomb = surface_lanes(*own, own_lanes);
     return lanes;
   }
 };
