@@ -62,16 +62,8 @@ inline MohrCoulombLanes surface_lanes(const MohrCoulomb* const surfaces[8]) {
 template <class Load>
 MohrCoulombLanes surface_lanes(const SurfaceArrays& a, Load load) {
   MohrCoulombLanes c;
-  c.k = load(a.k);
-  c.sigma_c = load(a.sigma_c);
-  c.apex = load(a.apex);
-  for (int i = 0; i < 3; ++i) {
-    c.plane_corrector[i] = load(a.plane_corrector[i]);
-    c.side1[i] = load(a.side1[i]);
-    c.side2[i] = load(a.side2[i]);
-    c.project1[i] = load(a.project1[i]);
-    c.project2[i] = load(a.project2[i]);
-  }
+  pair_surface_constants(c, a,
+                         [&](Lane8& lanes, const std::vector<double>& v) { lanes = load(v); });
   return c;
 }
 

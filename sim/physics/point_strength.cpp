@@ -8,24 +8,14 @@ namespace {
 
 // Point p's entries of the surface arrays: the constants of `mc`.
 void put_surface(SurfaceArrays& a, std::size_t p, const MohrCoulomb& mc) {
-  a.k[p] = mc.k;
-  a.sigma_c[p] = mc.sigma_c;
-  a.apex[p] = mc.apex;
-  for (int i = 0; i < 3; ++i) {
-    a.plane_corrector[i][p] = mc.plane_corrector[i];
-    a.side1[i][p] = mc.side1[i];
-    a.side2[i][p] = mc.side2[i];
-    a.project1[i][p] = mc.project1[i];
-    a.project2[i][p] = mc.project2[i];
-  }
+  pair_surface_constants(a, mc, [p](std::vector<double>& v, double c) { v[p] = c; });
 }
 
 // n entries in every surface array, each point's a default surface (the
 // linear-elastic points keep it; it is never used).
 void size_surfaces(SurfaceArrays& a, std::size_t n) {
-  for_each_surface_array(a, [n](std::vector<double>& v) { v.assign(n, 0.0); });
   const MohrCoulomb none{};
-  for (std::size_t p = 0; p < n; ++p) put_surface(a, p, none);
+  pair_surface_constants(a, none, [n](std::vector<double>& v, double c) { v.assign(n, c); });
 }
 
 // First field of the run: every point starts from its material's values.

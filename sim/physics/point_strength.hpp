@@ -44,16 +44,29 @@ struct PointStrength {
   bool active() const { return !cohesion.empty(); }
 };
 
+// Calls f(a.c, b.c) for each of the 18 constants c the step reads, by the
+// names that MohrCoulomb, MohrCoulombLanes and SurfaceArrays share: one list
+// of them for every copy from one form to another.
+template <class A, class B, class F>
+void pair_surface_constants(A& a, B& b, F f) {
+  f(a.k, b.k);
+  f(a.sigma_c, b.sigma_c);
+  f(a.apex, b.apex);
+  for (int i = 0; i < 3; ++i) {
+    f(a.plane_corrector[i], b.plane_corrector[i]);
+    f(a.side1[i], b.side1[i]);
+    f(a.side2[i], b.side2[i]);
+    f(a.project1[i], b.project1[i]);
+    f(a.project2[i], b.project2[i]);
+  }
+}
+
 // Visits the arrays of `s` (SurfaceArrays or const SurfaceArrays).
 template <class S, class Visit>
 void for_each_surface_array(S& s, Visit visit) {
   static_assert(sizeof(SurfaceArrays) == 18 * sizeof(std::vector<double>),
                 "an array was added to SurfaceArrays: visit it here");
-  visit(s.k);
-  visit(s.sigma_c);
-  visit(s.apex);
-  for (auto* a : {&s.plane_corrector, &s.side1, &s.side2, &s.project1, &s.project2})
-    for (auto& v : *a) visit(v);
+  pair_surface_constants(s, s, [&](auto& v, auto&) { visit(v); });
 }
 
 // Sets `property` ("cohesion" or "friction_angle") of every point of
