@@ -16,6 +16,8 @@ constexpr std::uint64_t kMaxFields = 64;
 
 void write_frame_file(const std::filesystem::path& file, const Frame& f) {
   sim::BinaryWriter w;
+  constexpr std::size_t kHeaderBytes = 256;  // magic, number, time, counts, checksum
+  w.reserve(f.bytes() + f.stage.size() + 8 * f.values.size() + kHeaderBytes);
   w.put(kMagic);
   w.put(f.number);
   w.put(f.time);

@@ -54,6 +54,9 @@ class BinaryWriter {
     put(std::uint64_t(s.size()));
     bytes_.append(s);
   }
+  // Room for `n` bytes in all: a writer that knows its size about grows its
+  // buffer once instead of by doubling, each time copying into fresh pages.
+  void reserve(std::size_t n) { bytes_.reserve(n); }
   const std::string& bytes() const { return bytes_; }
   std::string take() { return std::move(bytes_); }
 

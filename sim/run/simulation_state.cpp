@@ -91,6 +91,16 @@ auto point_arrays(P& p) {
                                         &p.x0,  &p.y0,  &p.ref_x, &p.ref_y};
 }
 
+// The size of a saved state, within its header and stage results: the
+// point arrays it holds (save_state below).
+std::size_t state_bytes_about(const World& w) {
+  constexpr std::size_t kHeaderBytes = 64 * 1024;
+  const std::size_t doubles = point_arrays(w.points).size() +
+                              (w.transfer == TransferScheme::Apic ? 4 : 0) +
+                              (w.strength.active() ? 2 : 0);
+  return w.points.size() * (doubles * sizeof(double) + 2) + kHeaderBytes;
+}
+
 // 64-bit FNV-1a.
 std::uint64_t hash_bytes(const std::string& bytes) {
   std::uint64_t h = 1469598103934665603ULL;
@@ -168,6 +178,7 @@ std::string Simulation::save_state() const { return save_state(std::string()); }
 std::string Simulation::save_state(std::string buffer) const {
   const std::vector<int> from = slots_in_scene_order(world_);
   BinaryWriter w(std::move(buffer));
+  w.reserve(state_bytes_about(world_));
   w.put(kMagic);
   w.put(kByteOrder);
   const std::size_t defined = stage_index_ + (progress_.started ? 1 : 0);
