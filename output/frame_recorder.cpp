@@ -133,6 +133,7 @@ FrameView FrameRecorder::check_layouts() {
 
 int FrameRecorder::paint_pending() {
   start();
+  scratch_ = Frame{};  // painting reads the frames back: the last capture is not needed
   const FrameView view = frame_view(scenario_, view_window(scenario_, extent_), painter_.font());
   const FrameView small = gif_view(scenario_, view, painter_.font());
   int written = 0;

@@ -238,7 +238,8 @@ class FrameRecorder {
   FrameView check_layouts();
   void capture(const sim::World& world, double stage_time, int number, const std::string& stage);
   std::size_t pending() const { return pending_.size(); }
-  // Bytes of captured frames held in memory (the one being spilled).
+  // Bytes of captured frames held in memory (the last one spilled; none once
+  // painting starts).
   std::size_t bytes_in_memory() const { return scratch_.bytes(); }
   // Paints every pending frame in the view over all of them, with one colour
   // range per stage, writes the PNGs, and removes the spilled files and

@@ -1,6 +1,6 @@
 #pragma once
-// Draws every point as a filled axis-aligned square (its GIMP domain) in one
-// OpenGL draw call.
+// Draws every point as a filled axis-aligned square (its GIMP domain), in
+// OpenGL draw calls of kSplatBatch points.
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -40,6 +40,9 @@ struct PixelSquare {
 };
 PixelSquare snap_square(const PixelMap& map, double x, double y, double hw, double hh);
 
+// Points per draw call: the vertex buffers hold this many at most.
+constexpr std::size_t kSplatBatch = 65536;
+
 class Splatter {
  public:
   // Clears ctx to style.background, then paints points clipped to `clip`
@@ -50,10 +53,13 @@ class Splatter {
             const SplatStyle& style = {});
 
   // Quads sent to GL by the last draw, after culling points outside the
-  // clip and merging same-colour runs.
+  // clip and merging same-colour runs within each batch.
   std::size_t last_drawn() const { return drawn_; }
 
  private:
+  std::size_t batch_quads(const PixelMap& map, const Rect& clip, const PointsView& points,
+                          std::size_t first, std::size_t end, const ColourMap& cmap, double lo,
+                          double hi);
   std::vector<float> xy_;
   std::vector<std::uint8_t> rgba_;
   std::size_t drawn_ = 0;

@@ -126,6 +126,7 @@ TEST(FrameRecorder, HoldsOneFrameInMemoryHoweverManyAreCaptured) {
   EXPECT_EQ(count_files(recorder.spill_dir(), R"(\d{6}\.frame)"), 40);
 
   EXPECT_EQ(recorder.paint_pending(), 80);
+  EXPECT_EQ(recorder.bytes_in_memory(), 0u);  // nor while it paints
   EXPECT_FALSE(fs::exists(recorder.spill_dir()));
   const fs::path velocity = recorder.frames_dir(app::Field::Velocity);
   EXPECT_EQ(count_files(velocity, R"(\d{6}\.png)"), 40);

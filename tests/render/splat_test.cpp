@@ -147,6 +147,39 @@ TEST(Splat, ClipsToTheWindowAndCullsOutsidePoints) {
   EXPECT_EQ(img.at(11, 20), ColourMap::jet().at(0));
 }
 
+// More points than one draw call takes (kSplatBatch), overlapping squares of
+// random colours and a same-colour run across the batches' boundary: the
+// image is, pixel for pixel, the squares of snap_square filled one after
+// another in the points' order (each pixel whose centre a square covers,
+// the last square's colour), as one draw call of them all gave.
+TEST(Splat, BatchesPaintTheSquaresInOrderPixelForPixel) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> pos(0.5, 39.5), half(0.01, 0.4), value(0.0, 1.0);
+  Cloud c;
+  const std::size_t n = kSplatBatch + kSplatBatch / 2 + 17;
+  for (std::size_t i = 0; i < n; ++i) c.add(pos(rng), pos(rng), half(rng), half(rng), value(rng));
+  for (std::size_t i = kSplatBatch - 3; i < kSplatBatch + 3; ++i) {  // one row, touching, one colour
+    c.x[i] = 10.05 + 0.1 * double(i - kSplatBatch), c.y[i] = 20.05;
+    c.hw[i] = c.hh[i] = 0.05, c.v[i] = 0.25;
+  }
+  const WorldWindow w{0, 40, 0, 40};
+  const int size = 320;
+  const Image img = paint(c, w, size, size, Rect{0, 0, size, size});
+  const PixelMap map = fit_window(w, Rect{0, 0, size, size});
+  const ColourMap cmap = ColourMap::viridis();
+  std::vector<Rgba> expected(std::size_t(size) * size, kWhite);
+  for (std::size_t i = 0; i < n; ++i) {
+    const PixelSquare q = snap_square(map, c.x[i], c.y[i], c.hw[i], c.hh[i]);
+    for (int py = std::max(0, q.y0); py < std::min(size, q.y1); ++py)
+      for (int px = std::max(0, q.x0); px < std::min(size, q.x1); ++px)
+        expected[std::size_t(py) * size + px] = cmap.map(c.v[i], 0.0, 1.0);
+  }
+  int wrong = 0;
+  for (int py = 0; py < size; ++py)
+    for (int px = 0; px < size; ++px) wrong += img.at(px, py) != expected[std::size_t(py) * size + px];
+  EXPECT_EQ(wrong, 0);
+}
+
 TEST(Splat, NullArraysAndBadRangeThrow) {
   PointsView v;
   v.count = 3;
