@@ -136,6 +136,9 @@ Estimate estimate_run(const sim::Simulation& sim, int width, int height, const f
   e.disk_bytes = e.frames * (spilled + e.fields * pixels * kFrameBytesPerPixel) +
                  e.states * e.points * kVtkBytesPerPoint;
   e.memory_bytes = kBaseMemoryBytes + kBytesPerPoint * e.points + kBytesPerNode * e.nodes;
+  if (e.frames > 0 && e.fields > 0)
+    e.memory_bytes += (sim::kBytesPerPaintedPoint + sim::kBytesPerPaintedFieldPoint * e.fields) *
+                      e.points;
   // A random field's draw is freed before the points' own strengths are
   // made (sim::set_point_strength), so the larger of the two counts: for a
   // 601,148-point slope 375 MB of draw, against 365 MB more peak RSS

@@ -7,10 +7,14 @@
 #include <stdexcept>
 
 #include "sim/physics/mohr_coulomb.hpp"
+#include "sim/scene/memory_budget.hpp"
 
 namespace app {
 
 namespace fs = std::filesystem;
+
+static_assert(static_cast<int>(Field::FrictionAngle) + 1 == sim::kMaxPaintedFields,
+              "sim/scene/memory_budget.hpp counts the memory of painting every field");
 
 namespace {
 

@@ -40,18 +40,36 @@ constexpr double kMaxFieldDrawBytes =
 // (sim/physics/node_array.hpp), so this bounds the grid from above.
 constexpr double kBytesPerNode = 100;
 
-// The largest scene the reader accepts fits a 24 GB machine at both limits:
-// the grid at its limit takes 5 GB, and the points the rest, rounded down to
-// a whole million. Larger scenes are refused as input errors before anything
+// Per point of a run that paints frames, on top of kBytesPerPoint: the frame
+// being captured and its bytes on their way to the spill file, then while
+// painting the frame read back and the painter's copy of its positions,
+// sizes and one field (output/frame_recorder.cpp; the splat's vertex
+// buffers hold a fixed batch, render/splat.hpp), and per field painted its
+// values. Measured: the 4,000,000-point square above painting 6 frames
+// peaked 72.4 B per point above the same run without frames with one field,
+// and 90.0 with three (1,679,388 and 1,747,908 against 1,396,392 KiB,
+// `landslide run --threads 2` under /usr/bin/time -v; bench/README.md, issue
+// 17's twenty-third pass: 152.9 with one field before the frames were read
+// in one piece and splatted in batches). Counted as 64 and 9 a field.
+constexpr double kBytesPerPaintedPoint = 64;
+constexpr double kBytesPerPaintedFieldPoint = 9;
+constexpr int kMaxPaintedFields = 8;  // each field of output/frames.hpp once
+constexpr double kMostBytesPerPaintedPoint =
+    kBytesPerPaintedPoint + kMaxPaintedFields * kBytesPerPaintedFieldPoint;
+
+// The largest scene the reader accepts fits a 24 GB machine at both limits,
+// painting every field: the grid at its limit takes 5 GB, and the points the
+// rest, rounded down to a whole million. Larger scenes are refused as input errors before anything
 // is allocated; the estimate then checks each run against the memory the
 // machine has free.
 constexpr double kMemoryOfLargestMachine = 24e9;
 constexpr double kMaxGridNodes = 50e6;
-constexpr double kMaxPoints = 51e6;
-static_assert(kBaseMemoryBytes + kBytesPerPoint * kMaxPoints + kBytesPerNode * kMaxGridNodes <=
+constexpr double kMaxPoints = 37e6;
+static_assert(kBaseMemoryBytes + (kBytesPerPoint + kMostBytesPerPaintedPoint) * kMaxPoints +
+                      kBytesPerNode * kMaxGridNodes <=
                   kMemoryOfLargestMachine,
               "the largest scene must fit the machine");
-static_assert(kBaseMemoryBytes + kBytesPerPoint * (kMaxPoints + 1e6) +
+static_assert(kBaseMemoryBytes + (kBytesPerPoint + kMostBytesPerPaintedPoint) * (kMaxPoints + 1e6) +
                       kBytesPerNode * kMaxGridNodes > kMemoryOfLargestMachine,
               "kMaxPoints: the largest whole million that fits");
 // A scene with a random field has at most one point per lattice node
@@ -60,7 +78,9 @@ static_assert(kBaseMemoryBytes + kBytesPerPoint * (kMaxPoints + 1e6) +
 constexpr double kMaxPointsWithField = kMaxLatticeNodes * kMaxLatticeNodes;
 static_assert(kBytesPerPointWithField * kMaxPointsWithField >= kMaxFieldDrawBytes,
               "a field's largest scene: its points' strengths outweigh its draw");
-static_assert(kBaseMemoryBytes + (kBytesPerPoint + kBytesPerPointWithField) * kMaxPointsWithField +
+static_assert(kBaseMemoryBytes +
+                      (kBytesPerPoint + kBytesPerPointWithField + kMostBytesPerPaintedPoint) *
+                          kMaxPointsWithField +
                       kBytesPerNode * kMaxGridNodes <=
                   kMemoryOfLargestMachine,
               "the largest scene with a field must fit the machine");

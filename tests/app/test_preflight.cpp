@@ -272,6 +272,27 @@ double memory_estimate(const std::string& out) {
   return -1;
 }
 
+// A Mohr-Coulomb square filling its 10 m domain, two points a cell each way:
+// (10 m / (cell_size / 2))^2 points. Its trigger sets the friction angle
+// to a number, and it paints no frames.
+json square_scene(double cell_size) {
+  json scene = json::parse(R"({
+    "name": "square", "domain": {"min": [0, 0], "max": [10, 10]},
+    "grid": {"padding_cells": 2, "points_per_cell": 2},
+    "gravity": [0, -9.81], "time_step": {"courant": 0.5},
+    "boundaries": {"left": "roller", "right": "roller", "bottom": "fixed", "top": "free"},
+    "materials": {"soil": {"model": "mohr-coulomb", "density": 2000, "youngs_modulus": 2e7,
+                  "poisson_ratio": 0.25, "cohesion": 1e4, "friction_angle": 25,
+                  "dilation_angle": 0, "critical_density": 1900}},
+    "bodies": [{"name": "b", "material": "soil", "rectangle": {"min": [0, 0], "max": [10, 10]}}],
+    "stages": [{"name": "trigger", "type": "material-change", "material": "soil",
+                "set": {"friction_angle": 25}},
+               {"name": "fall", "type": "dynamic", "duration": 0.001}],
+    "output": {"frame_interval": 0}})");
+  scene["grid"]["cell_size"] = cell_size;
+  return scene;
+}
+
 // What check's memory estimate adds when stage `stage` of `scene` sets a
 // random friction angle instead of its number; `scene_with_field` is the
 // scene as read with the field.
@@ -315,19 +336,7 @@ TEST_F(FieldMemory, ARandomFieldCountsItsDraw) {
 // field adds.
 TEST_F(FieldMemory, ARandomFieldOnEveryLatticeNodeCountsItsStrengths) {
   sim::Scenario s;
-  const double added = added_by_field(json::parse(R"({
-    "name": "square", "domain": {"min": [0, 0], "max": [10, 10]},
-    "grid": {"cell_size": 0.05, "padding_cells": 2, "points_per_cell": 2},
-    "gravity": [0, -9.81], "time_step": {"courant": 0.5},
-    "boundaries": {"left": "roller", "right": "roller", "bottom": "fixed", "top": "free"},
-    "materials": {"soil": {"model": "mohr-coulomb", "density": 2000, "youngs_modulus": 2e7,
-                  "poisson_ratio": 0.25, "cohesion": 1e4, "friction_angle": 25,
-                  "dilation_angle": 0, "critical_density": 1900}},
-    "bodies": [{"name": "b", "material": "soil", "rectangle": {"min": [0, 0], "max": [10, 10]}}],
-    "stages": [{"name": "trigger", "type": "material-change", "material": "soil",
-                "set": {"friction_angle": 25}},
-               {"name": "fall", "type": "dynamic", "duration": 0.001}],
-    "output": {"frame_interval": 0}})"), 0, s);
+  const double added = added_by_field(square_scene(0.05), 0, s);
   const double points = 400.0 * 400.0;  // (10 m / (0.05 m / 2))^2
   const double strengths = sim::kBytesPerPointWithField * points;
   ASSERT_LT(sim::field_draw_peak_bytes(sim::field_lattice(s)), strengths)
@@ -336,4 +345,30 @@ TEST_F(FieldMemory, ARandomFieldOnEveryLatticeNodeCountsItsStrengths) {
   // No less than a run measured: 198.5 B per point above the same run
   // without a field, for 4 M points of this square (memory_budget.hpp).
   EXPECT_GE(added, 198.5 * points - 1.5e6);
+}
+
+// Painting frames costs memory per point and per field painted
+// (sim/scene/memory_budget.hpp): check adds it to the estimate of the same
+// scene without frames, and no less than a run was measured to take.
+TEST_F(Preflight, PaintedFramesCountTheirMemoryPerPointAndField) {
+  json scene = square_scene(0.025);
+  const double points = 800.0 * 800.0;
+  double added[2] = {};
+  const std::vector<std::vector<std::string>> fields = {
+      {"displacement-x"}, {"displacement-x", "relative-yield", "velocity"}};
+  const Result without = landslide({"check", write_scene("unpainted", scene).string()});
+  ASSERT_EQ(without.status, 0) << without.err;
+  for (int k = 0; k < 2; ++k) {
+    scene["output"] = {{"frame_interval", 0.0005}, {"fields", fields[k]}};
+    const Result with = landslide({"check", write_scene("painted", scene).string()});
+    ASSERT_EQ(with.status, 0) << with.err;
+    added[k] = memory_estimate(with.out) - memory_estimate(without.out);
+    const double counted = sim::kBytesPerPaintedPoint +
+                           sim::kBytesPerPaintedFieldPoint * double(fields[k].size());
+    EXPECT_NEAR(added[k], counted * points, 1.5e6) << fields[k].size() << " fields";
+  }
+  // Measured for 4 M points of this square, 6 frames: 72.4 and 90.0 B per
+  // point above the same run without frames, with one and three fields.
+  EXPECT_GE(added[0], 72.4 * points - 1.5e6);
+  EXPECT_GE(added[1], 90.0 * points - 1.5e6);
 }

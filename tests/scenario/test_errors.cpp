@@ -212,7 +212,7 @@ const std::vector<BadCase>& bad_cases() {
          d["grid"]["cell_size"] = 0.01;
          d["grid"]["points_per_cell"] = 4;
        },
-       {"grid = ", "expected at most 51000000 points (body area / (cell_size / points_per_cell)^2); "
+       {"grid = ", "expected at most 37000000 points (body area / (cell_size / points_per_cell)^2); "
                    "the bodies need about 103040000"}},
       {"HugeCoordinatesOverPointBudget",
        [](Json& d) {
@@ -222,7 +222,7 @@ const std::vector<BadCase>& bad_cases() {
          d["bodies"] = {{{"name", "all"}, {"material", "soil"},
                          {"rectangle", {{"min", {0, 0}}, {"max", {1e200, 1e200}}}}}};
        },
-       {"grid = ", "expected at most 51000000 points"}},
+       {"grid = ", "expected at most 37000000 points"}},
       {"OverGridBudget", [](Json& d) { d["grid"]["cell_size"] = 0.001; },
        {"grid.cell_size = 0.001: expected a grid of at most 50000000 nodes; this domain, cell size "
         "and padding need about 1600"}},
