@@ -35,25 +35,12 @@ Lane8 lanes_of(const S* const from[8], double S::*field) {
   for (int l = 0; l < 8; ++l) v[l] = from[l]->*field;
   return v;
 }
-template <class S>
-Principal3Of<Lane8> lanes_of(const S* const from[8], Principal3 S::*field) {
-  Principal3Of<Lane8> v;
-  for (int i = 0; i < 3; ++i)
-    for (int l = 0; l < 8; ++l) v[i][l] = (from[l]->*field)[i];
-  return v;
-}
 
 // Lane l holds the constants of *surfaces[l].
 inline MohrCoulombLanes surface_lanes(const MohrCoulomb* const surfaces[8]) {
   MohrCoulombLanes c;
-  c.k = lanes_of(surfaces, &MohrCoulomb::k);
-  c.sigma_c = lanes_of(surfaces, &MohrCoulomb::sigma_c);
-  c.apex = lanes_of(surfaces, &MohrCoulomb::apex);
-  c.plane_corrector = lanes_of(surfaces, &MohrCoulomb::plane_corrector);
-  c.side1 = lanes_of(surfaces, &MohrCoulomb::side1);
-  c.side2 = lanes_of(surfaces, &MohrCoulomb::side2);
-  c.project1 = lanes_of(surfaces, &MohrCoulomb::project1);
-  c.project2 = lanes_of(surfaces, &MohrCoulomb::project2);
+  for (int l = 0; l < 8; ++l)
+    pair_surface_constants(c, *surfaces[l], [l](Lane8& lanes, const double& v) { lanes[l] = v; });
   return c;
 }
 
