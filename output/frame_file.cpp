@@ -14,8 +14,9 @@ constexpr std::uint64_t kMaxFields = 64;
 
 }  // namespace
 
-void write_frame_file(const std::filesystem::path& file, const Frame& f) {
-  sim::BinaryWriter w;
+std::string write_frame_file(const std::filesystem::path& file, const Frame& f,
+                             std::string buffer) {
+  sim::BinaryWriter w(std::move(buffer));
   constexpr std::size_t kHeaderBytes = 256;  // magic, number, time, counts, checksum
   w.reserve(f.bytes() + f.stage.size() + 8 * f.values.size() + kHeaderBytes);
   w.put(kMagic);
@@ -30,6 +31,7 @@ void write_frame_file(const std::filesystem::path& file, const Frame& f) {
   w.put_vector(f.material);
   append_checksum(w);
   write_bytes_atomically(file, w);
+  return w.take();
 }
 
 Frame read_frame_file(const std::filesystem::path& file) {

@@ -10,8 +10,11 @@
 namespace app {
 
 // Written under a temporary name and renamed: a kill leaves the whole file
-// or none. Throws std::runtime_error naming the file on an I/O failure.
-void write_frame_file(const std::filesystem::path& file, const Frame& frame);
+// or none. Throws std::runtime_error naming the file on an I/O failure. The
+// bytes are put together in `buffer`'s memory, handed back for the next
+// frame.
+std::string write_frame_file(const std::filesystem::path& file, const Frame& frame,
+                             std::string buffer = {});
 // Throws sim::StateError naming the file if it is missing, truncated or not
 // a frame file.
 Frame read_frame_file(const std::filesystem::path& file);

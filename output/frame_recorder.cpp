@@ -75,8 +75,8 @@ void FrameRecorder::resume(std::vector<PendingFrame> frames, const Extent& exten
 void FrameRecorder::capture(const sim::World& world, double stage_time, int number,
                             const std::string& stage) {
   if (pending_.empty()) fs::create_directories(spill_dir());
-  scratch_ = capture_frame(world, fields_, number, stage_time, stage);
-  write_frame_file(spill_file(number), scratch_);
+  capture_frame_into(scratch_, world, fields_, number, stage_time, stage);
+  spill_bytes_ = write_frame_file(spill_file(number), scratch_, std::move(spill_bytes_));
   extent_.add(scratch_);
   pending_.push_back(PendingFrame{number, stage});
 }
@@ -133,7 +133,9 @@ FrameView FrameRecorder::check_layouts() {
 
 int FrameRecorder::paint_pending() {
   start();
-  scratch_ = Frame{};  // painting reads the frames back: the last capture is not needed
+  // Painting reads the frames back: the last capture and its bytes are not needed.
+  scratch_ = Frame{};
+  std::string().swap(spill_bytes_);  // a move from an empty string keeps the memory
   const FrameView view = frame_view(scenario_, view_window(scenario_, extent_), painter_.font());
   const FrameView small = gif_view(scenario_, view, painter_.font());
   int written = 0;

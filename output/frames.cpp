@@ -69,8 +69,8 @@ struct StatePoints {
 constexpr double kDegreesPerRadian = 180.0 / 3.14159265358979323846;
 
 // A Mohr-Coulomb property of each plastic point; NaN (painted grey) elsewhere.
-template <class P, class Property>
-void strength_values(const P& p, std::vector<double>& v, Property property) {
+template <class P, class T, class Property>
+void strength_values(const P& p, std::vector<T>& v, Property property) {
   const auto& materials = p.materials();
   for (std::size_t i = 0; i < p.size(); ++i) {
     const int m = p.material(i);
@@ -79,10 +79,12 @@ void strength_values(const P& p, std::vector<double>& v, Property property) {
   }
 }
 
-template <class P>
-std::vector<double> values_of(Field f, const P& p) {
+// Field f of every point into v (doubles, or the floats of a frame: each
+// value is taken in double and rounded once either way).
+template <class P, class T>
+void values_into(Field f, const P& p, std::vector<T>& v) {
   const std::size_t n = p.size();
-  std::vector<double> v(n);
+  v.resize(n);
   switch (f) {
     case Field::DisplacementX:
       for (std::size_t i = 0; i < n; ++i) v[i] = p.ux(i);
@@ -124,13 +126,20 @@ std::vector<double> values_of(Field f, const P& p) {
       break;
     }
   }
-  return v;
 }
 
 template <class P>
-Frame capture(const P& p, const std::vector<Field>& fields, int number, double time,
-              const std::string& stage) {
-  Frame fr;
+std::vector<double> values_of(Field f, const P& p) {
+  std::vector<double> v;
+  values_into(f, p, v);
+  return v;
+}
+
+// Into `fr`, whose arrays keep their memory: a run capturing frame after
+// frame of millions of points then does not fault in fresh pages for each.
+template <class P>
+void capture(const P& p, const std::vector<Field>& fields, int number, double time,
+             const std::string& stage, Frame& fr) {
   fr.number = number;
   fr.time = time;
   fr.stage = stage;
@@ -143,16 +152,13 @@ Frame capture(const P& p, const std::vector<Field>& fields, int number, double t
     fr.y[i] = float(p.y(i));
     fr.half[i] = float(half_size(p.volume(i)));
   }
+  fr.material.clear();
   if (p.materials().size() > 1) {
     fr.material.resize(n);
     for (std::size_t i = 0; i < n; ++i) fr.material[i] = std::uint8_t(std::clamp(p.material(i), 0, 255));
   }
-  fr.values.reserve(fields.size());
-  for (const Field f : fields) {
-    const std::vector<double> v = values_of(f, p);
-    fr.values.emplace_back(v.begin(), v.end());
-  }
-  return fr;
+  fr.values.resize(fields.size());
+  for (std::size_t k = 0; k < fields.size(); ++k) values_into(fields[k], p, fr.values[k]);
 }
 
 }  // namespace
@@ -179,7 +185,14 @@ std::size_t Frame::bytes() const {
 
 Frame capture_frame(const sim::World& world, const std::vector<Field>& fields, int number,
                     double time, const std::string& stage) {
-  return capture(WorldPoints{world}, fields, number, time, stage);
+  Frame fr;
+  capture_frame_into(fr, world, fields, number, time, stage);
+  return fr;
+}
+
+void capture_frame_into(Frame& into, const sim::World& world, const std::vector<Field>& fields,
+                        int number, double time, const std::string& stage) {
+  capture(WorldPoints{world}, fields, number, time, stage, into);
 }
 
 Frame capture_frame(const sim::PointState& state,
@@ -191,7 +204,9 @@ Frame capture_frame(const sim::PointState& state,
     if (a->size() != state.x.size()) throw std::invalid_argument("point state arrays differ in size");
   if (state.material.size() != state.x.size() || state.yielded.size() != state.x.size())
     throw std::invalid_argument("point state arrays differ in size");
-  return capture(StatePoints{state, materials}, fields, number, time, stage);
+  Frame fr;
+  capture(StatePoints{state, materials}, fields, number, time, stage, fr);
+  return fr;
 }
 
 

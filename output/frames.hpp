@@ -96,6 +96,9 @@ struct Frame {
 
 Frame capture_frame(const sim::World& world, const std::vector<Field>& fields, int number,
                     double time, const std::string& stage);
+// The same into `into`, reusing its arrays' memory.
+void capture_frame_into(Frame& into, const sim::World& world, const std::vector<Field>& fields,
+                        int number, double time, const std::string& stage);
 Frame capture_frame(const sim::PointState& state,
                     const std::vector<sim::MaterialConstants>& materials,
                     const std::vector<Field>& fields, int number, double time,
@@ -238,9 +241,9 @@ class FrameRecorder {
   FrameView check_layouts();
   void capture(const sim::World& world, double stage_time, int number, const std::string& stage);
   std::size_t pending() const { return pending_.size(); }
-  // Bytes of captured frames held in memory (the last one spilled; none once
-  // painting starts).
-  std::size_t bytes_in_memory() const { return scratch_.bytes(); }
+  // Bytes held in memory for captured frames: the last one spilled and its
+  // bytes as written, kept for the next capture; none once painting starts.
+  std::size_t bytes_in_memory() const { return scratch_.bytes() + spill_bytes_.size(); }
   // Paints every pending frame in the view over all of them, with one colour
   // range per stage, writes the PNGs, and removes the spilled files and
   // their folder. Returns the number of PNG files written.
@@ -278,6 +281,7 @@ class FrameRecorder {
   std::vector<PendingFrame> pending_;
   Extent extent_;
   Frame scratch_;  // the frame being captured
+  std::string spill_bytes_;  // its bytes on their way to the spill file
   bool started_ = false;
   int written_ = 0;
 };
