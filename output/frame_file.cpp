@@ -35,29 +35,34 @@ std::string write_frame_file(const std::filesystem::path& file, const Frame& f,
 }
 
 Frame read_frame_file(const std::filesystem::path& file) {
-  std::string bytes =
-      read_file_bytes(file, file.string() + ": cannot read the captured frame");
+  Frame f;
+  std::string buffer;
+  read_frame_file(file, f, buffer);
+  return f;
+}
+
+void read_frame_file(const std::filesystem::path& file, Frame& f, std::string& bytes) {
+  bytes = read_file_bytes(file, file.string() + ": cannot read the captured frame",
+                          std::move(bytes));
   sim::BinaryReader r(bytes, file.string());
   if (bytes.size() < 8 || r.get<std::uint64_t>() != kMagic)
     r.fail("not a frame captured by this version of landslide");
   strip_checksum(bytes, file);  // r reads `bytes` by reference: the checksum is gone for it too
-  Frame f;
   f.number = r.get<int>();
   f.time = r.get<double>();
   f.stage = r.get_string();
-  f.x = r.get_vector<float>();
-  f.y = r.get_vector<float>(f.x.size(), "a frame's y");
-  f.half = r.get_vector<float>(f.x.size(), "a frame's sizes");
+  r.get_vector_into(f.x);
+  r.get_vector_into(f.y, f.x.size(), "a frame's y");
+  r.get_vector_into(f.half, f.x.size(), "a frame's sizes");
   const auto fields = r.get<std::uint64_t>();
   if (fields > kMaxFields) r.fail("a frame with " + std::to_string(fields) + " fields");
-  for (std::uint64_t k = 0; k < fields; ++k)
-    f.values.push_back(r.get_vector<float>(f.x.size(), "a frame's values"));
-  f.material = r.get_vector<std::uint8_t>();
+  f.values.resize(fields);
+  for (std::vector<float>& v : f.values) r.get_vector_into(v, f.x.size(), "a frame's values");
+  r.get_vector_into(f.material);
   if (!f.material.empty() && f.material.size() != f.x.size())
     r.fail("a frame with " + std::to_string(f.material.size()) + " material ids for " +
            std::to_string(f.x.size()) + " points");
   if (!r.at_end()) r.fail("bytes after the end of the frame");
-  return f;
 }
 
 }  // namespace app

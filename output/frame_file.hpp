@@ -18,5 +18,8 @@ std::string write_frame_file(const std::filesystem::path& file, const Frame& fra
 // Throws sim::StateError naming the file if it is missing, truncated or not
 // a frame file.
 Frame read_frame_file(const std::filesystem::path& file);
+// The same into `into`, through `buffer`: both keep their memory from one
+// frame to the next.
+void read_frame_file(const std::filesystem::path& file, Frame& into, std::string& buffer);
 
 }  // namespace app

@@ -83,11 +83,11 @@ void FrameRecorder::capture(const sim::World& world, double stage_time, int numb
 
 // One range per field over `frames` (one stage), reading one frame at a
 // time: memory holds one frame however many the stage has.
-std::vector<Range> FrameRecorder::stage_ranges(const std::vector<const PendingFrame*>& frames) const {
+std::vector<Range> FrameRecorder::stage_ranges(const std::vector<const PendingFrame*>& frames) {
   std::vector<RangeAccumulator> acc(fields_.size());
   for (const PendingFrame* p : frames) {
-    const Frame fr = read_frame_file(spill_file(p->number));
-    for (std::size_t k = 0; k < fields_.size(); ++k) acc[k].add(fr.values.at(k));
+    read_frame_file(spill_file(p->number), scratch_, spill_bytes_);
+    for (std::size_t k = 0; k < fields_.size(); ++k) acc[k].add(scratch_.values.at(k));
   }
   std::vector<Range> ranges;
   for (std::size_t k = 0; k < fields_.size(); ++k) ranges.push_back(acc[k].range(styles_[k]));
@@ -133,9 +133,6 @@ FrameView FrameRecorder::check_layouts() {
 
 int FrameRecorder::paint_pending() {
   start();
-  // Painting reads the frames back: the last capture and its bytes are not needed.
-  scratch_ = Frame{};
-  std::string().swap(spill_bytes_);  // a move from an empty string keeps the memory
   const FrameView view = frame_view(scenario_, view_window(scenario_, extent_), painter_.font());
   const FrameView small = gif_view(scenario_, view, painter_.font());
   int written = 0;
@@ -147,7 +144,8 @@ int FrameRecorder::paint_pending() {
       stage.push_back(&pending_[end++]);
     const std::vector<Range> ranges = stage_ranges(stage);
     for (const PendingFrame* p : stage) {
-      const Frame fr = read_frame_file(spill_file(p->number));
+      read_frame_file(spill_file(p->number), scratch_, spill_bytes_);
+      const Frame& fr = scratch_;
       for (std::size_t k = 0; k < fields_.size(); ++k) {
         const render::FrameSpec spec =
             frame_spec(scenario_, styles_[k], scenario_.output.colour_map, ranges[k], fr, view);
@@ -164,6 +162,10 @@ int FrameRecorder::paint_pending() {
     first = end;
   }
   pending_.clear();
+  // The frames are read back through the capture's frame and bytes, which
+  // then go: a run between its stages holds no frame.
+  scratch_ = Frame{};
+  std::string().swap(spill_bytes_);  // a move from an empty string keeps the memory
   fs::remove_all(spill_dir());
   written_ += written;
   return written;

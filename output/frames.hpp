@@ -242,7 +242,7 @@ class FrameRecorder {
   void capture(const sim::World& world, double stage_time, int number, const std::string& stage);
   std::size_t pending() const { return pending_.size(); }
   // Bytes held in memory for captured frames: the last one spilled and its
-  // bytes as written, kept for the next capture; none once painting starts.
+  // bytes as written, kept for the next capture or read; none once painted.
   std::size_t bytes_in_memory() const { return scratch_.bytes() + spill_bytes_.size(); }
   // Paints every pending frame in the view over all of them, with one colour
   // range per stage, writes the PNGs, and removes the spilled files and
@@ -271,7 +271,7 @@ class FrameRecorder {
 
  private:
   std::filesystem::path spill_file(int number) const;
-  std::vector<Range> stage_ranges(const std::vector<const PendingFrame*>& frames) const;
+  std::vector<Range> stage_ranges(const std::vector<const PendingFrame*>& frames);
 
   const sim::Scenario& scenario_;
   std::filesystem::path out_;
@@ -280,8 +280,8 @@ class FrameRecorder {
   FramePainter painter_;
   std::vector<PendingFrame> pending_;
   Extent extent_;
-  Frame scratch_;  // the frame being captured
-  std::string spill_bytes_;  // its bytes on their way to the spill file
+  Frame scratch_;  // the frame being captured, or read back to be painted
+  std::string spill_bytes_;  // its bytes on their way to or from the spill file
   bool started_ = false;
   int written_ = 0;
 };

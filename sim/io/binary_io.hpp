@@ -79,20 +79,31 @@ class BinaryReader {
   }
   template <class T>
   std::vector<T> get_vector() {
+    std::vector<T> v;
+    get_vector_into(v);
+    return v;
+  }
+  // The same into v, whose memory is reused where it is large enough.
+  template <class T>
+  void get_vector_into(std::vector<T>& v) {
     const std::uint64_t n = get<std::uint64_t>();
     if (n > (bytes_.size() - at_) / sizeof(T)) fail("an array runs past the end");
-    std::vector<T> v(n);
+    v.resize(n);
     if (n > 0) std::memcpy(v.data(), take(n * sizeof(T)), n * sizeof(T));
-    return v;
   }
   // An array that must hold exactly `n` values.
   template <class T>
   std::vector<T> get_vector(std::size_t n, const char* what) {
-    std::vector<T> v = get_vector<T>();
+    std::vector<T> v;
+    get_vector_into(v, n, what);
+    return v;
+  }
+  template <class T>
+  void get_vector_into(std::vector<T>& v, std::size_t n, const char* what) {
+    get_vector_into(v);
     if (v.size() != n)
       fail(std::string(what) + " holds " + std::to_string(v.size()) + " values, expected " +
            std::to_string(n));
-    return v;
   }
   std::string get_string() {
     const std::uint64_t n = get<std::uint64_t>();
