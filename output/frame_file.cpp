@@ -34,13 +34,6 @@ std::string write_frame_file(const std::filesystem::path& file, const Frame& f,
   return w.take();
 }
 
-Frame read_frame_file(const std::filesystem::path& file) {
-  Frame f;
-  std::string buffer;
-  read_frame_file(file, f, buffer);
-  return f;
-}
-
 void read_frame_file(const std::filesystem::path& file, Frame& f, std::string& bytes) {
   bytes = read_file_bytes(file, file.string() + ": cannot read the captured frame",
                           std::move(bytes));

@@ -14,12 +14,10 @@ namespace app {
 // bytes are put together in `buffer`'s memory, handed back for the next
 // frame.
 std::string write_frame_file(const std::filesystem::path& file, const Frame& frame,
-                             std::string buffer = {});
-// Throws sim::StateError naming the file if it is missing, truncated or not
-// a frame file.
-Frame read_frame_file(const std::filesystem::path& file);
-// The same into `into`, through `buffer`: both keep their memory from one
-// frame to the next.
+                             std::string buffer);
+// Into `into`, through `buffer`: both keep their memory from one frame to
+// the next. Throws sim::StateError naming the file if it is missing,
+// truncated or not a frame file.
 void read_frame_file(const std::filesystem::path& file, Frame& into, std::string& buffer);
 
 }  // namespace app
