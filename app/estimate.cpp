@@ -147,8 +147,8 @@ Estimate estimate_run(const sim::Simulation& sim, int width, int height, const f
     e.memory_bytes += std::max(sim::field_draw_peak_bytes(sim::field_lattice(s)),
                                sim::kBytesPerPointWithField * e.points);
   e.point_steps_per_second = calibrate_step_rate();
-  e.wall_seconds = e.point_steps / e.point_steps_per_second +
-                   e.frames * e.fields * pixels * kPaintSecondsPerPixel;
+  const double paint_seconds = pixels * kPaintSecondsPerPixel + e.points * kPaintSecondsPerPoint;
+  e.wall_seconds = e.point_steps / e.point_steps_per_second + e.frames * e.fields * paint_seconds;
   e.available_memory_bytes = mem_available_bytes();
   e.free_disk_bytes = out.empty() ? 0 : free_disk_bytes(out);
   return e;

@@ -24,6 +24,10 @@ using sim::kBytesPerPoint;
 constexpr double kVtkBytesPerPoint = 280;      // 268 measured (ASCII .vtu)
 constexpr double kFrameBytesPerPixel = 0.3;    // PNG 0.08 measured; GIF copy and videos
 constexpr double kPaintSecondsPerPixel = 0.1e-6;  // 0.076-0.084 us measured, painting and encoding
+// And per point of a painted frame and field: 61-63 ns measured (a 4 M-point
+// square against a 160,000-point one, 18 frames and fields of 1280 x 1180
+// px; bench/README.md, "What the estimate is built on").
+constexpr double kPaintSecondsPerPoint = 65e-9;
 
 // The limits a run is refused past unless --allow-long.
 constexpr double kMaxWallSeconds = 4 * 3600.0;

@@ -16,6 +16,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "app/estimate.hpp"
 #include "render/video.hpp"
 #include "sim/scene/memory_budget.hpp"
 #include "sim/scene/random_field.hpp"
@@ -371,4 +372,21 @@ TEST_F(Preflight, PaintedFramesCountTheirMemoryPerPointAndField) {
   // point above the same run without frames, with one and three fields.
   EXPECT_GE(added[0], 72.4 * points - 1.5e6);
   EXPECT_GE(added[1], 90.0 * points - 1.5e6);
+}
+
+// Painting time grows with the points painted, by no less than the 61-63 ns
+// per point, frame and field measured (app/estimate.hpp), whatever the pixels.
+TEST_F(Preflight, PaintingTimeCountsThePointsPainted) {
+  double painting[2] = {};
+  const double cells[2] = {0.05, 0.025}, points[2] = {400.0 * 400.0, 800.0 * 800.0};
+  for (int k = 0; k < 2; ++k) {
+    json scene = square_scene(cells[k]);
+    scene["output"] = {{"frame_interval", 0.0005}, {"fields", {"displacement-x"}}};
+    const sim::Simulation sim(sim::parse_scenario(scene.dump(), "square"));
+    const app::Estimate e = app::estimate_run(sim, 640, 640, fs::path(), 1);
+    ASSERT_EQ(e.points, std::size_t(points[k]));
+    ASSERT_EQ(e.frames, 3);  // 0, 0.5 and 1 ms
+    painting[k] = e.wall_seconds - e.point_steps / e.point_steps_per_second;
+  }
+  EXPECT_GE(painting[1] - painting[0], 3 * (points[1] - points[0]) * 61e-9);
 }
