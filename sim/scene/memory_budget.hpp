@@ -59,9 +59,9 @@ constexpr double kMostBytesPerPaintedPoint =
 
 // The largest scene the reader accepts fits a 24 GB machine at both limits,
 // painting every field: the grid at its limit takes 5 GB, and the points the
-// rest, rounded down to a whole million. Larger scenes are refused as input errors before anything
-// is allocated; the estimate then checks each run against the memory the
-// machine has free.
+// rest, rounded down to a whole million. Larger scenes are refused as input
+// errors before anything is allocated; the estimate then checks each run
+// against the memory the machine has free.
 constexpr double kMemoryOfLargestMachine = 24e9;
 constexpr double kMaxGridNodes = 50e6;
 constexpr double kMaxPoints = 37e6;
@@ -69,8 +69,10 @@ static_assert(kBaseMemoryBytes + (kBytesPerPoint + kMostBytesPerPaintedPoint) * 
                       kBytesPerNode * kMaxGridNodes <=
                   kMemoryOfLargestMachine,
               "the largest scene must fit the machine");
-static_assert(kBaseMemoryBytes + (kBytesPerPoint + kMostBytesPerPaintedPoint) * (kMaxPoints + 1e6) +
-                      kBytesPerNode * kMaxGridNodes > kMemoryOfLargestMachine,
+static_assert(kBaseMemoryBytes +
+                      (kBytesPerPoint + kMostBytesPerPaintedPoint) * (kMaxPoints + 1e6) +
+                      kBytesPerNode * kMaxGridNodes >
+                  kMemoryOfLargestMachine,
               "kMaxPoints: the largest whole million that fits");
 // A scene with a random field has at most one point per lattice node
 // (each starts on a node of its own), kMaxLatticeNodes^2 = 16 M; their own

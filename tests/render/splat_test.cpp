@@ -158,7 +158,8 @@ TEST(Splat, BatchesPaintTheSquaresInOrderPixelForPixel) {
   Cloud c;
   const std::size_t n = kSplatBatch + kSplatBatch / 2 + 17;
   for (std::size_t i = 0; i < n; ++i) c.add(pos(rng), pos(rng), half(rng), half(rng), value(rng));
-  for (std::size_t i = kSplatBatch - 3; i < kSplatBatch + 3; ++i) {  // one row, touching, one colour
+  // One row of touching squares of one colour across the boundary.
+  for (std::size_t i = kSplatBatch - 3; i < kSplatBatch + 3; ++i) {
     c.x[i] = 10.05 + 0.1 * double(i - kSplatBatch), c.y[i] = 20.05;
     c.hw[i] = c.hh[i] = 0.05, c.v[i] = 0.25;
   }
@@ -176,7 +177,8 @@ TEST(Splat, BatchesPaintTheSquaresInOrderPixelForPixel) {
   }
   int wrong = 0;
   for (int py = 0; py < size; ++py)
-    for (int px = 0; px < size; ++px) wrong += img.at(px, py) != expected[std::size_t(py) * size + px];
+    for (int px = 0; px < size; ++px)
+      wrong += img.at(px, py) != expected[std::size_t(py) * size + px];
   EXPECT_EQ(wrong, 0);
 }
 
