@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <iostream>
+#include <sstream>
 #include <vector>
 
 #include "output/exit_status.hpp"
@@ -29,8 +30,12 @@ int run_one(const Sweep& s, const SweepOptions& o, const RunMember& run_member, 
   const MemberRun r = member_run(o, index);
   fs::create_directories(r.out);
   sim::write_file_atomically(r.scene.string(), [&](std::ostream& os) { os << m.scene_text; });
-  std::cerr << "sweep: member " << index << " of " << s.members.size() << " on rank " << rank
-            << '\n';
+  // One write: std::cerr is unbuffered, so each << was a write of its own,
+  // and another rank's output could land inside the line (a fresh clone's
+  // Sweep.OneAndTwoRanksWriteTheSameCsv read "sweep: member 1estimate: ...").
+  std::ostringstream line;
+  line << "sweep: member " << index << " of " << s.members.size() << " on rank " << rank << '\n';
+  std::cerr << line.str();
   const int own = run_member(r);
   if (stopped(own)) return own;
   return own == app::kExitOk ? status : std::max(status, app::kExitFailed);
