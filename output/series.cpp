@@ -103,7 +103,7 @@ const std::vector<std::string>& series_columns() {
 }
 
 SeriesRow series_row(const sim::Simulation& sim, const sim::StageResult& r,
-                     const sim::StageMetrics& m) {
+                     const sim::StageMotion& m) {
   double max_u = 0;
   for (const sim::MaterialMotion& mm : m.materials) max_u = std::max(max_u, mm.max_displacement);
   SeriesRow row{sim.time(), r.name,
@@ -176,19 +176,19 @@ void SeriesRecorder::stage_begins(const sim::Simulation& sim, const sim::StageSp
   if (stage.type == sim::StageType::MaterialChange || sim::stage_is_painted(scenario_, stage) ||
       next_row_ > 0)
     return;
-  add(series_row(sim, sim.stage_so_far(), sim::measure_stage(sim.world())));
+  add(series_row(sim, sim.stage_so_far(), sim::measure_motion(sim.world())));
   next_row_ = 1;
 }
 
 void SeriesRecorder::frame(const sim::Simulation& sim) {
-  add(series_row(sim, sim.stage_so_far(), sim::measure_stage(sim.world())));
+  add(series_row(sim, sim.stage_so_far(), sim::measure_motion(sim.world())));
 }
 
 void SeriesRecorder::progress(const sim::Simulation& sim, const sim::StageSpec& stage) {
   if (sim::stage_is_painted(scenario_, stage)) return;
   const double every = interval(stage);
   if (sim.stage_time() < next_row_ * every * (1 - kEventSlack)) return;
-  add(series_row(sim, sim.stage_so_far(), sim::measure_stage(sim.world())));
+  add(series_row(sim, sim.stage_so_far(), sim::measure_motion(sim.world())));
   next_row_ = long(std::floor(sim.stage_time() / every + kEventSlack)) + 1;
 }
 

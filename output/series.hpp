@@ -54,9 +54,10 @@ struct SeriesRow {
 const std::vector<std::string>& series_columns();
 
 // The state now: `r` is the stage's result so far (sim::Simulation::
-// stage_so_far) or the ended stage's, `m` the metrics of the points now.
+// stage_so_far) or the ended stage's, `m` how far the points have gone now
+// (sim::measure_motion, or the ended stage's metrics).
 SeriesRow series_row(const sim::Simulation& sim, const sim::StageResult& r,
-                     const sim::StageMetrics& m);
+                     const sim::StageMotion& m);
 
 std::string series_csv(const std::vector<SeriesRow>& rows);
 // Throws SeriesError naming `label` and the line: a header other than

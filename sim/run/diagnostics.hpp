@@ -37,11 +37,17 @@ struct MaterialMotion {
 // The band of density, relative to the initial one, that counts as packed.
 constexpr double kPackedDensityBand = 0.10;
 
-struct StageMetrics {
+// How far the soil and each material went: what a row of series.csv reads.
+struct StageMotion {
   double max_soil_ux = 0;       // largest |x - x0| of soil, m
   // The soil's toe before any load and now, and the runout toe -
   // initial_toe, m: one definition everywhere (sim/run/runout.hpp).
   double initial_toe = 0, toe = 0, runout = 0;
+  std::vector<MaterialMotion> materials;
+};
+
+// And the state of the soil's body, as summary.json reports it per stage.
+struct StageMetrics : StageMotion {
   double main_body_fraction = 1;  // soil points in the largest connected group of cells
   // Soil mass within kPackedDensityBand of its material's initial density: a
   // packed deposit, not a loose cloud (sim/physics/granular.hpp).
@@ -50,9 +56,11 @@ struct StageMetrics {
   double disconnected_fraction = 0;
   double yielding_fraction = 0;   // soil points that yielded in the last step
   double deposit_slope_deg = 0;   // NaN where no slope can be fitted (see .cpp)
-  std::vector<MaterialMotion> materials;
 };
 
+// Both measure the points where they are stored, on the run's threads, with
+// the same bits at any thread count (sim/run/point_chunks.hpp).
+StageMotion measure_motion(const World& world);
 StageMetrics measure_stage(const World& world);
 
 // Kinetic energy of the points, sum m |v|^2 / 2, J/m.

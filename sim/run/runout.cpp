@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "sim/run/point_chunks.hpp"
+
 namespace sim {
 
 namespace {
@@ -21,35 +23,63 @@ void square(const World& w, std::size_t p, bool initial, double& x, double& half
   half = 0.5 * std::sqrt(pts.mass[p] / rho);
 }
 
+constexpr double kNone = std::numeric_limits<double>::max();
+
+// The soil's extent along x, now or as seeded: [lo, hi] of its squares.
+struct Extent {
+  double lo = kNone, hi = -kNone;
+};
+
+// The soil's height as seeded, [low, high] of its squares, and its leftmost point.
+struct Seeded {
+  double low = kNone, high = -kNone, left = kNone;
+};
+
 }  // namespace
 
-ThicknessProfile deposit_thickness(const World& w, const std::vector<char>& counted, bool initial,
-                                   double window) {
+ThicknessProfile deposit_thickness(const World& w, bool initial, double window) {
   ThicknessProfile prof;
   prof.step = window / kBins;
-  double lo = std::numeric_limits<double>::max(), hi = std::numeric_limits<double>::lowest();
-  for (std::size_t p = 0; p < w.points.size(); ++p) {
-    if (!counted[p]) continue;
-    double x, a;
-    square(w, p, initial, x, a);
-    lo = std::min(lo, x - a);
-    hi = std::max(hi, x + a);
-  }
-  if (lo > hi) return prof;
-  prof.x_begin = lo - window;
-  const auto bins = static_cast<std::size_t>(std::ceil((hi + window - prof.x_begin) / prof.step));
-  std::vector<double> area(bins + 1, 0.0);
-  for (std::size_t p = 0; p < w.points.size(); ++p) {
-    if (!counted[p]) continue;
-    double x, a;
-    square(w, p, initial, x, a);
-    const double per_length = 2.0 * a;  // the square's area (2a)^2 over its width 2a
-    const double from = (x - a - prof.x_begin) / prof.step, to = (x + a - prof.x_begin) / prof.step;
-    for (auto k = static_cast<std::size_t>(from); k <= static_cast<std::size_t>(to) && k < bins; ++k) {
-      const double overlap = std::min(to, k + 1.0) - std::max(from, static_cast<double>(k));
-      if (overlap > 0) area[k] += per_length * overlap * prof.step;
-    }
-  }
+  const Extent extent = reduce_points(
+      w.points.size(), Extent{},
+      [&](Extent& e, std::size_t begin, std::size_t end) {
+        for (std::size_t p = begin; p < end; ++p) {
+          if (!is_soil(w, p)) continue;
+          double x, a;
+          square(w, p, initial, x, a);
+          e.lo = std::min(e.lo, x - a);
+          e.hi = std::max(e.hi, x + a);
+        }
+      },
+      [](Extent& total, const Extent& e) {
+        total.lo = std::min(total.lo, e.lo);
+        total.hi = std::max(total.hi, e.hi);
+      });
+  if (extent.lo > extent.hi) return prof;
+  prof.x_begin = extent.lo - window;
+  const auto bins =
+      static_cast<std::size_t>(std::ceil((extent.hi + window - prof.x_begin) / prof.step));
+  // Each chunk of points adds to bins of its own, summed in chunk order.
+  const std::vector<double> area = reduce_points(
+      w.points.size(), std::vector<double>(bins + 1, 0.0),
+      [&](std::vector<double>& area, std::size_t begin, std::size_t end) {
+        for (std::size_t p = begin; p < end; ++p) {
+          if (!is_soil(w, p)) continue;
+          double x, a;
+          square(w, p, initial, x, a);
+          const double per_length = 2.0 * a;  // the square's area (2a)^2 over its width 2a
+          const double from = (x - a - prof.x_begin) / prof.step;
+          const double to = (x + a - prof.x_begin) / prof.step;
+          for (auto k = static_cast<std::size_t>(from);
+               k <= static_cast<std::size_t>(to) && k < bins; ++k) {
+            const double overlap = std::min(to, k + 1.0) - std::max(from, static_cast<double>(k));
+            if (overlap > 0) area[k] += per_length * overlap * prof.step;
+          }
+        }
+      },
+      [](std::vector<double>& total, const std::vector<double>& area) {
+        for (std::size_t k = 0; k < total.size(); ++k) total[k] += area[k];
+      });
   // The window centred on each bin: kBins - 1 whole bins and two halves.
   prof.thickness.assign(bins, 0.0);
   const int half = kBins / 2;
@@ -81,23 +111,28 @@ double toe_beyond(const ThicknessProfile& prof, double start, double threshold) 
 
 Runout measure_runout(const World& w) {
   Runout r;
-  std::vector<char> soil(w.points.size(), 0);
-  double low = std::numeric_limits<double>::max(), high = std::numeric_limits<double>::lowest();
-  double left = std::numeric_limits<double>::max();
-  for (std::size_t p = 0; p < w.points.size(); ++p) {
-    if (!is_soil(w, p)) continue;
-    soil[p] = 1;
-    double x, a;
-    square(w, p, true, x, a);
-    low = std::min(low, w.points.y0[p] - a);
-    high = std::max(high, w.points.y0[p] + a);
-    left = std::min(left, x);
-  }
-  if (low > high) return r;
-  r.threshold = kToeThicknessFraction * (high - low);
-  r.window = kToeWindowFraction * (high - low);
-  r.initial_toe = toe_beyond(deposit_thickness(w, soil, true, r.window), left, r.threshold);
-  r.toe = toe_beyond(deposit_thickness(w, soil, false, r.window), r.initial_toe, r.threshold);
+  const Seeded s = reduce_points(
+      w.points.size(), Seeded{},
+      [&](Seeded& seeded, std::size_t begin, std::size_t end) {
+        for (std::size_t p = begin; p < end; ++p) {
+          if (!is_soil(w, p)) continue;
+          double x, a;
+          square(w, p, true, x, a);
+          seeded.low = std::min(seeded.low, w.points.y0[p] - a);
+          seeded.high = std::max(seeded.high, w.points.y0[p] + a);
+          seeded.left = std::min(seeded.left, x);
+        }
+      },
+      [](Seeded& total, const Seeded& s) {
+        total.low = std::min(total.low, s.low);
+        total.high = std::max(total.high, s.high);
+        total.left = std::min(total.left, s.left);
+      });
+  if (s.low > s.high) return r;
+  r.threshold = kToeThicknessFraction * (s.high - s.low);
+  r.window = kToeWindowFraction * (s.high - s.low);
+  r.initial_toe = toe_beyond(deposit_thickness(w, true, r.window), s.left, r.threshold);
+  r.toe = toe_beyond(deposit_thickness(w, false, r.window), r.initial_toe, r.threshold);
   r.runout = r.toe - r.initial_toe;
   return r;
 }

@@ -35,9 +35,8 @@ namespace sim {
 constexpr double kToeThicknessFraction = 0.015;
 constexpr double kToeWindowFraction = 0.05;
 
-// The deposit thickness of the points flagged in `counted` over a window
-// `window` wide, sampled every `step` from x_begin: sample k is at x_begin +
-// (k + 0.5) step.
+// The deposit thickness of the soil over a window `window` wide, sampled
+// every `step` from x_begin: sample k is at x_begin + (k + 0.5) step.
 struct ThicknessProfile {
   double x_begin = 0, step = 0;
   std::vector<double> thickness;
@@ -46,8 +45,7 @@ struct ThicknessProfile {
 
 // `initial`: the points at their initial positions, with their initial
 // volumes (m_p / rho_0 of their material).
-ThicknessProfile deposit_thickness(const World& world, const std::vector<char>& counted,
-                                   bool initial, double window);
+ThicknessProfile deposit_thickness(const World& world, bool initial, double window);
 
 // The first x at or beyond `start` where the profile is thinner than
 // `threshold` (linear between samples); the profile's end when it never is.
