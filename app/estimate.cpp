@@ -11,9 +11,12 @@
 
 #include "output/amount_text.hpp"
 #include "output/frames.hpp"
+#include "output/series.hpp"
 #include "sim/scene/random_field.hpp"
 #include "sim/scene/seed.hpp"
 #include "sim/physics/step.hpp"
+#include "sim/run/diagnostics.hpp"
+#include "sim/run/point_chunks.hpp"
 
 namespace app {
 
@@ -83,8 +86,12 @@ void count_stages(const sim::Simulation& sim, Estimate& e) {
     e.steps += st.steps;
     e.may_end_early = e.may_end_early || st.may_end_early;
     e.stages.push_back(st);
-    if (e.fields > 0 && sim::stage_is_painted(s, stage))
-      e.frames += events(from, stage.duration, s.output.frame_interval);
+    const bool painted = sim::stage_is_painted(s, stage);
+    if (e.fields > 0 && painted) e.frames += events(from, stage.duration, s.output.frame_interval);
+    // A row at each frame of a painted stage; otherwise at its start, at
+    // most one a step at each row interval, and at its end.
+    e.rows += painted ? events(from, stage.duration, s.output.frame_interval)
+                      : std::min(st.steps + 2, events(from, stage.duration, series_interval(s, stage)));
     if (s.output.vtk == "stage-end") e.states += 1;
     if (s.output.vtk == "interval") e.states += events(from, stage.duration, s.output.vtk_interval);
   }
@@ -93,10 +100,10 @@ void count_stages(const sim::Simulation& sim, Estimate& e) {
 
 }  // namespace
 
-double calibrate_step_rate() {
+Calibration calibrate() {
   // Once per thread count and process: the members of a sweep (sweep/), each
   // run through run's preflight, would otherwise pay 0.15 s apiece for it.
-  static std::map<int, double> measured;
+  static std::map<int, Calibration> measured;
   const int threads = omp_get_max_threads();
   const auto known = measured.find(threads);
   if (known != measured.end()) return known->second;
@@ -115,7 +122,20 @@ double calibrate_step_rate() {
     one_step();
     ++steps;
   }
-  return measured[threads] = double(w.points.size()) * double(steps) / seconds_since(start);
+  Calibration c;
+  c.point_steps_per_second = double(w.points.size()) * double(steps) / seconds_since(start);
+  const auto rows_start = std::chrono::steady_clock::now();
+  long rows = 0;
+  // What a row measures (output/series.cpp); each sum enters an OpenMP
+  // region, a call into libgomp that the compiler cannot drop.
+  while (rows < 3 || seconds_since(rows_start) < kCalibrationSeconds / 10) {
+    sim::measure_motion(w);
+    sim::kinetic_energy(w);
+    sim::elastic_energy(w);
+    ++rows;
+  }
+  c.row_seconds_per_point = seconds_since(rows_start) / double(rows) / double(w.points.size());
+  return measured[threads] = c;
 }
 
 Estimate estimate_run(const sim::Simulation& sim, int width, int height, const fs::path& out,
@@ -146,9 +166,14 @@ Estimate estimate_run(const sim::Simulation& sim, int width, int height, const f
   if (sim::sets_random_field(s))
     e.memory_bytes += std::max(sim::field_draw_peak_bytes(sim::field_lattice(s)),
                                sim::kBytesPerPointWithField * e.points);
-  e.point_steps_per_second = calibrate_step_rate();
+  const Calibration c = calibrate();
+  e.point_steps_per_second = c.point_steps_per_second;
+  // A scene of more than one chunk measures its rows on the run's threads.
+  const double row_threads = double(std::min<std::size_t>(threads, sim::point_chunks(e.points)));
+  e.row_seconds = e.rows * double(e.points) * c.row_seconds_per_point / std::max(1.0, row_threads);
   const double paint_seconds = pixels * kPaintSecondsPerPixel + e.points * kPaintSecondsPerPoint;
-  e.wall_seconds = e.point_steps / e.point_steps_per_second + e.frames * e.fields * paint_seconds;
+  e.wall_seconds = e.point_steps / e.point_steps_per_second + e.row_seconds +
+                   e.frames * e.fields * paint_seconds;
   e.available_memory_bytes = mem_available_bytes();
   e.free_disk_bytes = out.empty() ? 0 : free_disk_bytes(out);
   return e;
@@ -167,6 +192,8 @@ void print_estimate(std::ostream& o, const Estimate& e) {
     o << "  frames: " << upto << count_text(e.frames) << " per field, " << e.fields
       << " fields, " << e.frame_width << " x " << e.frame_height << " px\n";
   if (e.states > 0) o << "  VTK states: " << upto << count_text(e.states) << '\n';
+  o << "  series rows: " << upto << count_text(e.rows) << " (" << duration_text(e.row_seconds)
+    << ")\n";
   o << "  disk: " << upto << bytes_text(e.disk_bytes);
   if (e.free_disk_bytes > 0) o << " (" << bytes_text(e.free_disk_bytes) << " free)";
   o << "\n  memory: about " << bytes_text(e.memory_bytes);

@@ -51,7 +51,10 @@ struct Estimate {
   int fields = 0;
   double states = 0;  // VTK states
   double disk_bytes = 0, memory_bytes = 0;
-  double point_steps_per_second = 0;  // calibrated now (calibrate_step_rate)
+  double point_steps_per_second = 0;  // calibrated now (calibrate)
+  // Rows of series.csv: each measures every point (output/series.hpp).
+  double rows = 0;
+  double row_seconds = 0;  // all of them, with the run's threads
   int threads = 1;
   double wall_seconds = 0;
   // Where memory and disk are checked against what the machine has.
@@ -59,11 +62,19 @@ struct Estimate {
   double free_disk_bytes = 0;         // on the output's file system; 0 if unknown
 };
 
-// Point-steps per second of the GIMP step on this machine with the present
-// OpenMP threads: a built-in 7,680-point soil block stepped for about 0.15 s
-// of wall time (figures vary from run to run; never assert them). Measured
-// once per thread count in a process (a sweep's members share it).
-double calibrate_step_rate();
+// What this machine takes, measured on a built-in 7,680-point soil block
+// (figures vary from run to run; never assert them):
+struct Calibration {
+  // Point-steps per second of the GIMP step with the present OpenMP threads,
+  // the block stepped for about 0.15 s of wall time.
+  double point_steps_per_second = 0;
+  // Seconds per point of a row of series.csv (sim::measure_motion and the
+  // energy balance's two sums) on one thread: the block is one chunk of
+  // sim/run/point_chunks.hpp, whose rows run on one thread.
+  double row_seconds_per_point = 0;
+};
+// Measured once per thread count in a process (a sweep's members share it).
+Calibration calibrate();
 
 // The estimate for `sim` as it stands (fresh, or restored), whose frames are
 // width x height pixels (0 x 0 when it paints none); `out` locates the disk

@@ -102,6 +102,11 @@ const std::vector<std::string>& series_columns() {
   return columns;
 }
 
+double series_interval(const sim::Scenario& scenario, const sim::StageSpec& stage) {
+  const double every = scenario.output.frame_interval;
+  return every > 0 ? every : stage.duration / 100;
+}
+
 SeriesRow series_row(const sim::Simulation& sim, const sim::StageResult& r,
                      const sim::StageMotion& m) {
   double max_u = 0;
@@ -158,10 +163,6 @@ std::vector<SeriesRow> read_series(const fs::path& file) {
 SeriesRecorder::SeriesRecorder(const sim::Scenario& scenario, fs::path out_dir)
     : scenario_(scenario), out_(std::move(out_dir)), font_(std::make_unique<render::Font>()) {}
 
-double SeriesRecorder::interval(const sim::StageSpec& stage) const {
-  const double every = scenario_.output.frame_interval;
-  return every > 0 ? every : stage.duration / 100;
-}
 
 void SeriesRecorder::add(SeriesRow row) {
   // The end of a stage at a frame time: the same state, written once.
@@ -186,7 +187,7 @@ void SeriesRecorder::frame(const sim::Simulation& sim) {
 
 void SeriesRecorder::progress(const sim::Simulation& sim, const sim::StageSpec& stage) {
   if (sim::stage_is_painted(scenario_, stage)) return;
-  const double every = interval(stage);
+  const double every = series_interval(scenario_, stage);
   if (sim.stage_time() < next_row_ * every * (1 - kEventSlack)) return;
   add(series_row(sim, sim.stage_so_far(), sim::measure_motion(sim.world())));
   next_row_ = long(std::floor(sim.stage_time() / every + kEventSlack)) + 1;

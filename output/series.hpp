@@ -53,6 +53,10 @@ struct SeriesRow {
 
 const std::vector<std::string>& series_columns();
 
+// The stage time between the rows of a stage that is not painted:
+// output.frame_interval, or 1/100 of the stage's duration where that is 0.
+double series_interval(const sim::Scenario& scenario, const sim::StageSpec& stage);
+
 // The state now: `r` is the stage's result so far (sim::Simulation::
 // stage_so_far) or the ended stage's, `m` how far the points have gone now
 // (sim::measure_motion, or the ended stage's metrics).
@@ -92,7 +96,6 @@ class SeriesRecorder {
 
  private:
   void add(SeriesRow row);
-  double interval(const sim::StageSpec& stage) const;
 
   const sim::Scenario& scenario_;
   std::filesystem::path out_;

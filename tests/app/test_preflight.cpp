@@ -209,7 +209,7 @@ TEST_F(Preflight, CheckPrintsTheEstimateRunStartsWith) {
   EXPECT_NE(counts.find(" points, "), std::string::npos) << c.out;
   EXPECT_NE(counts.find("steps: settle "), std::string::npos) << c.out;
   EXPECT_EQ(r.err.find(counts), 0u) << r.err;
-  for (const char* line : {"  memory: about ", "  wall time: about "})
+  for (const char* line : {"  series rows: ", "  memory: about ", "  wall time: about "})
     EXPECT_NE(c.out.find(line), std::string::npos) << c.out;
 }
 

@@ -15,6 +15,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/commands.hpp"
+#include "app/estimate.hpp"
 #include "output/series.hpp"
 #include "output/series_plot.hpp"
 #include "output/summary.hpp"
@@ -123,6 +124,19 @@ TEST_F(SeriesRun, CsvHasItsHeaderAndRowsInIncreasingTimeAndThePngDecodes) {
   ASSERT_EQ(slump.size(), 4u);
   for (std::size_t k = 0; k < 4; ++k) EXPECT_NEAR(slump[k], 0.05 * k, 1e-12);
   EXPECT_NEAR(rows.back().time, 0.35, 1e-12);
+}
+
+// `landslide check` counts the rows the run writes (app/estimate.hpp), and
+// their time: each row measures every point.
+TEST_F(SeriesRun, TheEstimateCountsTheRowsAndTheirTime) {
+  const std::vector<app::SeriesRow> rows = app::read_series(out_ / "series.csv");
+  const sim::Simulation sim(sim::load_scenario(scenario_.string()));
+  const app::Estimate e = app::estimate_run(sim, 320, 180, fs::path(), 1);
+  EXPECT_EQ(e.rows, double(rows.size()));
+  const double per_row = double(e.points) * app::calibrate().row_seconds_per_point;
+  EXPECT_GT(per_row, 0.0);
+  EXPECT_DOUBLE_EQ(e.row_seconds, e.rows * per_row);  // one chunk: on one thread
+  EXPECT_GE(e.wall_seconds, e.point_steps / e.point_steps_per_second + e.row_seconds);
 }
 
 // The last row of each stage holds, to the bit, what summary.json reports.
