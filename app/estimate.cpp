@@ -173,7 +173,7 @@ Estimate estimate_run(const sim::Simulation& sim, int width, int height, const f
   e.row_seconds = e.rows * double(e.points) * c.row_seconds_per_point / std::max(1.0, row_threads);
   const double paint_seconds = pixels * kPaintSecondsPerPixel + e.points * kPaintSecondsPerPoint;
   e.wall_seconds = e.point_steps / e.point_steps_per_second + e.row_seconds +
-                   e.frames * e.fields * paint_seconds;
+                   e.frames * e.fields * paint_seconds + e.states * e.points * kVtkSecondsPerPoint;
   e.available_memory_bytes = mem_available_bytes();
   e.free_disk_bytes = out.empty() ? 0 : free_disk_bytes(out);
   return e;

@@ -28,6 +28,11 @@ constexpr double kPaintSecondsPerPixel = 0.1e-6;  // 0.076-0.084 us measured, pa
 // square against a 160,000-point one, 18 frames and fields of 1280 x 1180
 // px; bench/README.md, "What the estimate is built on").
 constexpr double kPaintSecondsPerPoint = 65e-9;
+// And per point of a VTK state (ASCII .vtu, 244 bytes a point): 1.3-1.9 us
+// measured, a 4 M-point state written in 5.3-7.5 s on 2 threads, most of it
+// the kernel's copy of the file into the page cache (bench/README.md, issue
+// 17's twenty-fourth pass).
+constexpr double kVtkSecondsPerPoint = 2e-6;
 
 // The limits a run is refused past unless --allow-long.
 constexpr double kMaxWallSeconds = 4 * 3600.0;
