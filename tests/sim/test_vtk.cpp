@@ -1,6 +1,7 @@
 // The VTK state files (sim/io/vtk.hpp): formatted in pieces on the OpenMP
 // threads, they hold the same bytes at any thread count, and read back to
-// the points' values bit for bit (17 significant digits round-trip).
+// the points' values bit for bit (17 significant digits round-trip); a
+// damaged file is refused with the array named.
 #include <gtest/gtest.h>
 #include <omp.h>
 #include <unistd.h>
@@ -9,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 
 #include "sim/io/vtk.hpp"
@@ -67,6 +69,36 @@ TEST(Vtk, SameBytesAtAnyThreadCountAndReadBackBitForBit) {
     ASSERT_EQ(std::signbit(s.sxy[i]), std::signbit(p.sxy[i])) << i;
     ASSERT_EQ(s.sxy[i], p.sxy[i]) << i;
     ASSERT_EQ(s.yielded[i], p.yielded[i]) << i;
+  }
+
+  // A word that is not a number, deep in a many-piece array, and a missing
+  // value: read_vtu names the array.
+  std::string text = read_text(dir / "one.vtu");
+  const std::size_t stress = text.find("Name=\"stress\"");
+  const std::size_t deep = text.find('\n', stress + 2 * (std::size_t(1) << 20)) + 1;
+  ASSERT_LT(deep, text.find("</DataArray>", stress)) << "the array spans several pieces";
+  std::string bad = text;
+  bad[deep] = 'x';
+  std::ofstream(dir / "bad.vtu", std::ios::binary) << bad;
+  EXPECT_THROW(
+      {
+        try {
+          sim::read_vtu((dir / "bad.vtu").string());
+        } catch (const std::runtime_error& e) {
+          EXPECT_NE(std::string(e.what()).find("DataArray 'stress' holds a non-number"),
+                    std::string::npos) << e.what();
+          throw;
+        }
+      },
+      std::runtime_error);
+  bad = text;
+  bad.erase(deep, bad.find('\n', deep) - deep + 1);  // one point's line of four
+  std::ofstream(dir / "short.vtu", std::ios::binary) << bad;
+  try {
+    sim::read_vtu((dir / "short.vtu").string());
+    ADD_FAILURE() << "a missing line was read";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("DataArray 'stress' has"), std::string::npos) << e.what();
   }
   fs::remove_all(dir);
 }
