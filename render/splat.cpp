@@ -24,14 +24,23 @@ void validate_points(const PointsView& p) {
 }
 
 namespace {
+// std::lround of a clamped value without the call into libm (four a point;
+// 3 % of the samples of a 4 M-point run painting three fields, issue 17):
+// the nearest integer, halves away from zero. a - trunc(a) is exact, so the
+// comparisons with 0.5 decide as lround does.
+int round_half_away(double a) {
+  const double whole = std::trunc(a), part = a - whole;
+  return int(whole) + (part >= 0.5 ? 1 : part <= -0.5 ? -1 : 0);
+}
+
 // Snap both edges to the nearest pixel boundary and keep at least one pixel:
 // a half-open [a, a + 1) span always holds exactly one pixel centre.
 void snap_span(double a, double b, int& lo, int& hi) {
   // Clamp far-off values before the int conversion.
   a = std::clamp(a, -1e7, 1e7);
   b = std::clamp(b, -1e7, 1e7);
-  lo = int(std::lround(a));
-  hi = int(std::lround(b));
+  lo = round_half_away(a);
+  hi = round_half_away(b);
   if (hi <= lo) {
     lo = int(std::floor((a + b) / 2));
     hi = lo + 1;

@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <vector>
@@ -180,6 +181,29 @@ TEST(Splat, BatchesPaintTheSquaresInOrderPixelForPixel) {
     for (int px = 0; px < size; ++px)
       wrong += img.at(px, py) != expected[std::size_t(py) * size + px];
   EXPECT_EQ(wrong, 0);
+}
+
+// snap_square rounds the squares' edges as std::lround does (halves away
+// from zero), at exact halves on both sides of zero and at random places.
+TEST(Splat, SnapRoundsEdgesAsLround) {
+  const PixelMap map = fit_window(WorldWindow{0, 40, 0, 40}, Rect{0, 0, 40, 40});
+  const auto lround_of = [](double v) { return int(std::lround(std::clamp(v, -1e7, 1e7))); };
+  std::vector<double> xs;
+  for (int k = -6; k <= 6; ++k) xs.push_back(k + 1.25);  // edges at k + 0.5 and k + 2
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> pos(-50, 90);
+  for (int i = 0; i < 20000; ++i) xs.push_back(pos(rng));
+  int checked = 0;
+  for (const double x : xs) {
+    const double hw = 0.75;
+    const PixelSquare q = snap_square(map, x, x, hw, hw);
+    const int lo = lround_of(map.x(x - hw)), hi = lround_of(map.x(x + hw));
+    if (hi <= lo) continue;  // one pixel at the middle instead
+    ASSERT_EQ(q.x0, lo) << x;
+    ASSERT_EQ(q.x1, hi) << x;
+    ++checked;
+  }
+  EXPECT_GT(checked, 1000);
 }
 
 TEST(Splat, NullArraysAndBadRangeThrow) {
