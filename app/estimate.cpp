@@ -90,8 +90,9 @@ void count_stages(const sim::Simulation& sim, Estimate& e) {
     if (e.fields > 0 && painted) e.frames += events(from, stage.duration, s.output.frame_interval);
     // A row at each frame of a painted stage; otherwise at its start, at
     // most one a step at each row interval, and at its end.
-    e.rows += painted ? events(from, stage.duration, s.output.frame_interval)
-                      : std::min(st.steps + 2, events(from, stage.duration, series_interval(s, stage)));
+    const double every = painted ? s.output.frame_interval : series_interval(s, stage);
+    e.rows += painted ? events(from, stage.duration, every)
+                      : std::min(st.steps + 2, events(from, stage.duration, every));
     if (s.output.vtk == "stage-end") e.states += 1;
     if (s.output.vtk == "interval") e.states += events(from, stage.duration, s.output.vtk_interval);
   }

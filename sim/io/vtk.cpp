@@ -165,7 +165,8 @@ std::vector<double> read_array(const std::string& text, const std::string& file,
     throw std::runtime_error(file + ": DataArray '" + name + "' holds a non-number");
   std::vector<double> values;
   values.reserve(count);
-  for (const std::vector<double>& part : parts) values.insert(values.end(), part.begin(), part.end());
+  for (const std::vector<double>& part : parts)
+    values.insert(values.end(), part.begin(), part.end());
   if (values.size() != count)
     throw std::runtime_error(file + ": DataArray '" + name + "' has " +
                              std::to_string(values.size()) + " values, expected " +

@@ -47,7 +47,8 @@ sim::World busy_world() {
 }
 
 TEST(Vtk, SameBytesAtAnyThreadCountAndReadBackBitForBit) {
-  const fs::path dir = fs::temp_directory_path() / ("landslide-vtk-test-" + std::to_string(::getpid()));
+  const fs::path dir =
+      fs::temp_directory_path() / ("landslide-vtk-test-" + std::to_string(::getpid()));
   fs::create_directories(dir);
   const sim::World w = busy_world();
   ASSERT_GT(w.points.size(), 2u * 16384u);
