@@ -35,21 +35,33 @@ struct Seeded {
   double low = kNone, high = -kNone, left = kNone;
 };
 
+// reduce_points over the soil's squares, now or as seeded: add(acc, p, x, a)
+// takes point p's centre x and half side a into a chunk's `acc`.
+template <class Acc, class Add, class Combine>
+Acc reduce_soil_squares(const World& w, bool initial, const Acc& start, Add add, Combine combine) {
+  return reduce_points(
+      w.points.size(), start,
+      [&](Acc& acc, std::size_t begin, std::size_t end) {
+        for (std::size_t p = begin; p < end; ++p) {
+          if (!is_soil(w, p)) continue;
+          double x, a;
+          square(w, p, initial, x, a);
+          add(acc, p, x, a);
+        }
+      },
+      combine);
+}
+
 }  // namespace
 
 ThicknessProfile deposit_thickness(const World& w, bool initial, double window) {
   ThicknessProfile prof;
   prof.step = window / kBins;
-  const Extent extent = reduce_points(
-      w.points.size(), Extent{},
-      [&](Extent& e, std::size_t begin, std::size_t end) {
-        for (std::size_t p = begin; p < end; ++p) {
-          if (!is_soil(w, p)) continue;
-          double x, a;
-          square(w, p, initial, x, a);
-          e.lo = std::min(e.lo, x - a);
-          e.hi = std::max(e.hi, x + a);
-        }
+  const Extent extent = reduce_soil_squares(
+      w, initial, Extent{},
+      [](Extent& e, std::size_t, double x, double a) {
+        e.lo = std::min(e.lo, x - a);
+        e.hi = std::max(e.hi, x + a);
       },
       [](Extent& total, const Extent& e) {
         total.lo = std::min(total.lo, e.lo);
@@ -60,21 +72,16 @@ ThicknessProfile deposit_thickness(const World& w, bool initial, double window) 
   const auto bins =
       static_cast<std::size_t>(std::ceil((extent.hi + window - prof.x_begin) / prof.step));
   // Each chunk of points adds to bins of its own, summed in chunk order.
-  const std::vector<double> area = reduce_points(
-      w.points.size(), std::vector<double>(bins + 1, 0.0),
-      [&](std::vector<double>& area, std::size_t begin, std::size_t end) {
-        for (std::size_t p = begin; p < end; ++p) {
-          if (!is_soil(w, p)) continue;
-          double x, a;
-          square(w, p, initial, x, a);
-          const double per_length = 2.0 * a;  // the square's area (2a)^2 over its width 2a
-          const double from = (x - a - prof.x_begin) / prof.step;
-          const double to = (x + a - prof.x_begin) / prof.step;
-          for (auto k = static_cast<std::size_t>(from);
-               k <= static_cast<std::size_t>(to) && k < bins; ++k) {
-            const double overlap = std::min(to, k + 1.0) - std::max(from, static_cast<double>(k));
-            if (overlap > 0) area[k] += per_length * overlap * prof.step;
-          }
+  const std::vector<double> area = reduce_soil_squares(
+      w, initial, std::vector<double>(bins + 1, 0.0),
+      [&](std::vector<double>& area, std::size_t, double x, double a) {
+        const double per_length = 2.0 * a;  // the square's area (2a)^2 over its width 2a
+        const double from = (x - a - prof.x_begin) / prof.step;
+        const double to = (x + a - prof.x_begin) / prof.step;
+        for (auto k = static_cast<std::size_t>(from);
+             k <= static_cast<std::size_t>(to) && k < bins; ++k) {
+          const double overlap = std::min(to, k + 1.0) - std::max(from, static_cast<double>(k));
+          if (overlap > 0) area[k] += per_length * overlap * prof.step;
         }
       },
       [](std::vector<double>& total, const std::vector<double>& area) {
@@ -111,17 +118,12 @@ double toe_beyond(const ThicknessProfile& prof, double start, double threshold) 
 
 Runout measure_runout(const World& w) {
   Runout r;
-  const Seeded s = reduce_points(
-      w.points.size(), Seeded{},
-      [&](Seeded& seeded, std::size_t begin, std::size_t end) {
-        for (std::size_t p = begin; p < end; ++p) {
-          if (!is_soil(w, p)) continue;
-          double x, a;
-          square(w, p, true, x, a);
-          seeded.low = std::min(seeded.low, w.points.y0[p] - a);
-          seeded.high = std::max(seeded.high, w.points.y0[p] + a);
-          seeded.left = std::min(seeded.left, x);
-        }
+  const Seeded s = reduce_soil_squares(
+      w, true, Seeded{},
+      [&](Seeded& seeded, std::size_t p, double x, double a) {
+        seeded.low = std::min(seeded.low, w.points.y0[p] - a);
+        seeded.high = std::max(seeded.high, w.points.y0[p] + a);
+        seeded.left = std::min(seeded.left, x);
       },
       [](Seeded& total, const Seeded& s) {
         total.low = std::min(total.low, s.low);
