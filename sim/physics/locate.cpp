@@ -60,6 +60,39 @@ int* counts_of(World& w, int t) {
   return w.thread_counts.data() + static_cast<std::size_t>(t) * w.bins;
 }
 
+// Eight points' stencils stored, lanes [0, count) of the six weight lanes
+// (wx then wy) and the base nodes: a transposition in registers makes each
+// point's 56 bytes one vector, stored at once, where going through a buffer
+// on the stack cost six loads and stores a point.
+void store_stencils(StencilWeights* out, int count, const Lane8 w[6], const Int8& base_i,
+                    const Int8& base_j) {
+  static_assert(sizeof(StencilWeights) == 7 * sizeof(double), "six weights, two ints");
+  // The base nodes as StencilWeights lays them out: base_i in the low half
+  // of the eighth word, base_j in the high half.
+  const Int8 ij = (base_i & 0xffffffff) | (base_j << 32);
+  const Lane8 a[8] = {w[0], w[1], w[2], w[3], w[4], w[5], reinterpret_cast<Lane8>(ij), Lane8{}};
+  Lane8 t[8], u[8], point[8];
+  for (int k = 0; k < 4; ++k) {
+    t[2 * k] = __builtin_shufflevector(a[2 * k], a[2 * k + 1], 0, 8, 2, 10, 4, 12, 6, 14);
+    t[2 * k + 1] = __builtin_shufflevector(a[2 * k], a[2 * k + 1], 1, 9, 3, 11, 5, 13, 7, 15);
+  }
+  for (int k = 0; k < 2; ++k)
+    for (int odd = 0; odd < 2; ++odd) {
+      const Lane8 &lo = t[4 * k + odd], &hi = t[4 * k + 2 + odd];
+      u[4 * k + 2 * odd] = __builtin_shufflevector(lo, hi, 0, 1, 8, 9, 4, 5, 12, 13);
+      u[4 * k + 2 * odd + 1] = __builtin_shufflevector(lo, hi, 2, 3, 10, 11, 6, 7, 14, 15);
+    }
+  // u[m] (m = 2 * odd + pair) holds fields 0-3 of points {m', m' + 4}, fields
+  // 4-7 in u[m + 4], where m' = odd + 2 * pair.
+  for (int m = 0; m < 4; ++m) {
+    const int l = (m >> 1) + 2 * (m & 1);
+    point[l] = __builtin_shufflevector(u[m], u[m + 4], 0, 1, 2, 3, 8, 9, 10, 11);
+    point[l + 4] = __builtin_shufflevector(u[m], u[m + 4], 4, 5, 6, 7, 12, 13, 14, 15);
+  }
+  for (int l = 0; l < count; ++l)
+    std::memcpy(static_cast<void*>(&out[l]), &point[l], sizeof(StencilWeights));
+}
+
 // Stencils of the points of Lane8 blocks [first_block, end_block), eight
 // points at a time (gimp.hpp; the last block repeats its last point where the
 // points run out), each point counted in its bin (`counts`, the thread's,
@@ -70,7 +103,9 @@ void compute_stencils(World& w, int first_block, int end_block, int* counts, int
   const Grid& g = w.grid;
   const int n = static_cast<int>(pts.size());
   std::fill(counts, counts + w.bins, 0);
-  int i_lo = g.nx, i_hi = -1, j_lo = g.ny, j_hi = -1, bad = n, off_bins = 0;
+  // The window's bounds lane by lane, reduced over the lanes at the end.
+  Int8 i_lo = Int8{} + g.nx, i_hi = Int8{} - 1, j_lo = Int8{} + g.ny, j_hi = Int8{} - 1;
+  int bad = n, off_bins = 0;
   for (int blk = first_block; blk < end_block; ++blk) {
     const int first = 8 * blk, count = std::min(8, n - first);
     Lane8 x, y;
@@ -84,43 +119,45 @@ void compute_stencils(World& w, int first_block, int end_block, int* counts, int
       }
     }
     Int8 base_i, base_j;
-    // The lanes of each weight side by side, so that a point's six doubles
-    // are read from one small block (its stencil is a row of each array).
     // The derivatives are not kept: the stress phase makes them again from
     // the positions (point_update.cpp), and the compiler drops them here.
     Lane8 lanes[6], slopes[3];
     gimp_axis(x, g.origin_x, w.gimp, base_i, &lanes[0], slopes);
     gimp_axis(y, g.origin_y, w.gimp, base_j, &lanes[3], slopes);
-    double weights[6][8];
-    std::memcpy(weights, lanes, sizeof weights);
+    store_stencils(&w.weights[first], count, lanes, base_i, base_j);
+    // x - x is 0 for a finite x and NaN otherwise. The lanes past count
+    // repeat a point, so they change no bound.
+    const Int8 inside = (x - x == 0) & (y - y == 0) & (base_i >= 0) & (base_j >= 0) &
+                        (base_i + 2 < g.nx) & (base_j + 2 < g.ny);
+    // Bins of the points inside only (the others' base nodes may be anything).
+    const Int8 bi = (inside & base_i) - w.bin_i0, bj = (inside & base_j) - w.bin_j0;
+    const Int8 on_bins = (bi >= 0) & (bi < w.bin_width) & (bj >= 0) & (bj * w.bin_width < w.bins);
+    const Int8 bin = on_bins ? bj * w.bin_width + bi : Int8{} - 1;
     for (int l = 0; l < count; ++l) {
-      StencilWeights& st = w.weights[first + l];
-      st.base_i = static_cast<int>(base_i[l]);
-      st.base_j = static_cast<int>(base_j[l]);
-      for (int a = 0; a < 3; ++a) {
-        st.wx[a] = weights[a][l];
-        st.wy[a] = weights[3 + a][l];
-      }
-      const bool inside = std::isfinite(x[l]) && std::isfinite(y[l]) && st.base_i >= 0 &&
-                          st.base_j >= 0 && st.base_i + 2 < g.nx && st.base_j + 2 < g.ny;
-      if (!inside) {
+      if (!inside[l]) {
         bad = std::min(bad, scene_index_of(w, first + l));
         continue;
       }
-      i_lo = std::min(i_lo, st.base_i);
-      i_hi = std::max(i_hi, st.base_i);
-      j_lo = std::min(j_lo, st.base_j);
-      j_hi = std::max(j_hi, st.base_j);
-      const int bin = bin_of(w, st.base_i, st.base_j);
-      if (bin < 0) {
+      if (bin[l] < 0) {
         ++off_bins;
         continue;
       }
-      w.bin_key[first + l] = bin;
-      ++counts[bin];
+      w.bin_key[first + l] = static_cast<int>(bin[l]);
+      ++counts[bin[l]];
     }
+    // Points off the grid stay out of the window.
+    i_lo = inside & (base_i < i_lo) ? base_i : i_lo;
+    i_hi = inside & (base_i > i_hi) ? base_i : i_hi;
+    j_lo = inside & (base_j < j_lo) ? base_j : j_lo;
+    j_hi = inside & (base_j > j_hi) ? base_j : j_hi;
   }
-  const int partial[kWindowInts] = {i_lo, i_hi, j_lo, j_hi, bad, off_bins};
+  int partial[kWindowInts] = {g.nx, -1, g.ny, -1, bad, off_bins};
+  for (int l = 0; l < 8; ++l) {
+    partial[0] = std::min(partial[0], static_cast<int>(i_lo[l]));
+    partial[1] = std::max(partial[1], static_cast<int>(i_hi[l]));
+    partial[2] = std::min(partial[2], static_cast<int>(j_lo[l]));
+    partial[3] = std::max(partial[3], static_cast<int>(j_hi[l]));
+  }
   std::copy(partial, partial + kWindowInts, window);
 }
 
