@@ -4,6 +4,7 @@
 #pragma once
 
 #include <atomic>
+#include <cstddef>
 #include <cstdint>
 #include <stdexcept>
 #include <vector>
@@ -133,6 +134,12 @@ enum BandSum : int {
 struct PointSums {
   double gravity_work, kinetic, moving, damped, signal, walled;
 };
+
+// Whether point p is soil, of a Mohr-Coulomb material: what the diagnostics
+// and the runout measure, leaving the house and other elastic bodies out.
+inline bool is_soil(const World& w, std::size_t p) {
+  return w.materials[w.points.material[p]].plastic;
+}
 
 inline void store_point_sums(World& w, int band, const PointSums& s) {
   double* sums = &w.band_sums[band * kBandSums];

@@ -11,8 +11,6 @@ namespace sim {
 
 namespace {
 
-bool is_soil(const World& w, std::size_t p) { return w.materials[w.points.material[p]].plastic; }
-
 // The grid cells holding soil, labelled into 8-connected groups, and the
 // group with the most soil points: the main body. A lone point or clump
 // thrown off the slide is not part of it.

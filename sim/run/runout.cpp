@@ -13,8 +13,6 @@ namespace {
 // Bins per window of the profile.
 constexpr int kBins = 8;
 
-bool is_soil(const World& w, std::size_t p) { return w.materials[w.points.material[p]].plastic; }
-
 // A point's square: centre and half side, now or as seeded.
 void square(const World& w, std::size_t p, bool initial, double& x, double& half) {
   const Particles& pts = w.points;
