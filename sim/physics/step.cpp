@@ -118,11 +118,10 @@ M held(const NodeArray<std::uint8_t>& fix, int k) {
   if constexpr (std::is_same_v<M, bool>) {
     return fix[k] != 0;
   } else {
-    std::uint8_t bytes[8];
-    std::memcpy(bytes, &fix[k], sizeof bytes);
-    M m;
-    for (int l = 0; l < 8; ++l) m[l] = bytes[l] != 0 ? -1 : 0;
-    return m;
+    typedef std::uint8_t Bytes8 __attribute__((vector_size(8)));
+    Bytes8 bytes;
+    std::memcpy(&bytes, &fix[k], sizeof bytes);
+    return __builtin_convertvector(bytes != 0, M);  // -1 or 0, widened with its sign
   }
 }
 // Row j's window, eight nodes at a time while eight remain, then one by one.
