@@ -1,8 +1,10 @@
 #include "sweep/sweep.hpp"
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <iostream>
-#include <sstream>
+#include <optional>
 #include <vector>
 
 #include "output/exit_status.hpp"
@@ -11,6 +13,7 @@
 #include "sweep/ranks.hpp"
 #include "sweep/sweep_plan.hpp"
 #include "sweep/sweep_results.hpp"
+#include "sweep/whole_lines.hpp"
 
 namespace sweep {
 
@@ -30,12 +33,8 @@ int run_one(const Sweep& s, const SweepOptions& o, const RunMember& run_member, 
   const MemberRun r = member_run(o, index);
   fs::create_directories(r.out);
   sim::write_file_atomically(r.scene.string(), [&](std::ostream& os) { os << m.scene_text; });
-  // One write: std::cerr is unbuffered, so each << was a write of its own,
-  // and another rank's output could land inside the line (a fresh clone's
-  // Sweep.OneAndTwoRanksWriteTheSameCsv read "sweep: member 1estimate: ...").
-  std::ostringstream line;
-  line << "sweep: member " << index << " of " << s.members.size() << " on rank " << rank << '\n';
-  std::cerr << line.str();
+  std::cerr << "sweep: member " << index << " of " << s.members.size() << " on rank " << rank
+            << '\n';
   const int own = run_member(r);
   if (stopped(own)) return own;
   return own == app::kExitOk ? status : std::max(status, app::kExitFailed);
@@ -89,6 +88,12 @@ int preflight_members(const Sweep& s, const Plan& plan, const SweepOptions& o,
 int run_sweep(const SweepOptions& o, const RunMember& run_member,
               const CheckMember& check_member) {
   Ranks ranks;
+  // Several ranks share the terminal: each line goes out whole.
+  std::optional<WholeLines> whole_errors, whole_output;
+  if (ranks.size() > 1) {
+    whole_errors.emplace(std::cerr, STDERR_FILENO);
+    whole_output.emplace(std::cout, STDOUT_FILENO);
+  }
   Sweep s;
   if (checked_sweep(o, s, ranks.rank() == 0) != app::kExitOk) return app::kExitBadInput;
   std::vector<bool> done(s.members.size());
