@@ -27,20 +27,19 @@ void map_band_apic(World& w, int band) {
   double* const arrays[3] = {g.mass.data(), g.px.data(), g.py.data()};
   const StencilWeights* const weights = w.weights.data();
   double kinetic = 0;
-  scatter_in_runs(arrays, g.stride, w.order.data(), w.band_start[band], w.band_start[band + 1],
-                  weights, [&](int p, Lane4(&rows)[3][3]) {
-                    const StencilWeights& st = weights[p];
-                    const double m = pts.mass[p], vx = pts.vx[p], vy = pts.vy[p];
-                    kinetic += 0.5 * m * (vx * vx + vy * vy);
-                    const Lane4 dx = column_offsets(g, st, pts.x[p]);
-                    for (int b = 0; b < 3; ++b) {
-                      const double dy = row_offset(g, st, b, pts.y[p]);
-                      const Lane4 mS = x_weights(st) * st.wy[b] * m;
-                      rows[0][b] += mS;
-                      rows[1][b] += mS * (vx + pts.cxx[p] * dx + pts.cxy[p] * dy);
-                      rows[2][b] += mS * (vy + pts.cyx[p] * dx + pts.cyy[p] * dy);
-                    }
-                  });
+  scatter_band_in_runs(w, band, arrays, [&](int p, Lane4(&rows)[3][3]) {
+    const StencilWeights& st = weights[p];
+    const double m = pts.mass[p], vx = pts.vx[p], vy = pts.vy[p];
+    kinetic += 0.5 * m * (vx * vx + vy * vy);
+    const Lane4 dx = column_offsets(g, st, pts.x[p]);
+    for (int b = 0; b < 3; ++b) {
+      const double dy = row_offset(g, st, b, pts.y[p]);
+      const Lane4 mS = x_weights(st) * st.wy[b] * m;
+      rows[0][b] += mS;
+      rows[1][b] += mS * (vx + pts.cxx[p] * dx + pts.cxy[p] * dy);
+      rows[2][b] += mS * (vy + pts.cyx[p] * dx + pts.cyy[p] * dy);
+    }
+  });
   w.band_sums[band * kBandSums + kKineticBeforeGrid] = kinetic;
 }
 

@@ -307,4 +307,29 @@ void scatter_own_bands(World& w, BandMark which, BandMark ready, Visit visit) {
   clock.finish();
 }
 
+// The points of `band` in runs of one base node, as the sorted points of a
+// band come (locate.cpp): the 3x3 nodes of N nodal arrays (three stencil
+// rows, each with its fourth lane) are read once a run into `rows`, add(p,
+// rows) adds each point's terms in the band's order, and the rows are
+// written back at the run's end. Each node still receives its terms one by
+// one in the points' order, so its sum has the bits of a node read and
+// written per point. The rows are a local array: held as the member array of
+// a struct (NodeSums, until issue 17's twenty-fifth pass), g++ 12 kept them
+// on the stack and P2G took 9.1 ns a point instead of 7.0.
+template <int N, class Add>
+void scatter_band_in_runs(World& w, int band, double* const (&arrays)[N], Add add) {
+  const Grid& g = w.grid;
+  const auto base_of = [&](int p) { return g.node(w.weights[p].base_i, w.weights[p].base_j); };
+  const int end = w.band_start[band + 1];
+  for (int s = w.band_start[band]; s < end;) {
+    const int base = base_of(w.order[s]);
+    Lane4 rows[N][3];
+    for (int k = 0; k < N; ++k)
+      for (int b = 0; b < 3; ++b) rows[k][b] = load4(arrays[k] + base + b * g.stride);
+    for (; s < end && base_of(w.order[s]) == base; ++s) add(w.order[s], rows);
+    for (int k = 0; k < N; ++k)
+      for (int b = 0; b < 3; ++b) store4(arrays[k] + base + b * g.stride, rows[k][b]);
+  }
+}
+
 }  // namespace sim

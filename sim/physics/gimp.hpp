@@ -182,36 +182,9 @@ inline Lane4 x_weights(const StencilWeights& st) {
 // vector operation of eight lanes whose two halves are two components.
 inline Lane8 twice(const Lane4& v) { return join4(v, v); }
 
-// A scatter phase's points in runs of one base node, as the sorted points of
-// a band come (locate.cpp): the 3x3 nodes of N nodal arrays (three stencil
-// rows, each with its fourth lane) are read once a run into `rows`, add(p,
-// rows) adds each point's terms in the points' order, and the rows are
-// written back at the run's end. Each node still receives its terms one by
-// one in the points' order, so its sum has the same bits as a node read and
-// written per point. The rows are a local array here: held as the member
-// array of a struct (NodeSums, until issue 17's twenty-fifth pass), g++ 12
-// kept them on the stack and P2G took 9.1 ns a point instead of 7.0.
-template <int N, class Add>
-void scatter_in_runs(double* const (&arrays)[N], int stride, const int* order, int first,
-                     int end, const StencilWeights* weights, Add add) {
-  for (int s = first; s < end;) {
-    const StencilWeights& lead = weights[order[s]];
-    const int base = lead.base_j * stride + lead.base_i;
-    Lane4 rows[N][3];
-    for (int k = 0; k < N; ++k)
-      for (int b = 0; b < 3; ++b) rows[k][b] = load4(arrays[k] + base + b * stride);
-    for (; s < end; ++s) {
-      const int p = order[s];
-      if (weights[p].base_j * stride + weights[p].base_i != base) break;
-      add(p, rows);
-    }
-    for (int k = 0; k < N; ++k)
-      for (int b = 0; b < 3; ++b) store4(arrays[k] + base + b * stride, rows[k][b]);
-  }
-}
-
-// The nodes of two nodal arrays held side by side for a scatter, the first array's rows in the
-// low halves of three Lane8 and the second's in the high halves: one vector
+// The rows of a base node's 3x3 nodes of two nodal arrays, held side by side
+// while a scatter's points share that node: the first array's rows in the low
+// halves of three Lane8 and the second's in the high halves, so one vector
 // operation adds a point's terms to both (the force scatter's fx and fy).
 // Each lane receives the same terms in the same order, so the same bits.
 struct NodeSumsSideBySide {

@@ -65,17 +65,16 @@ void map_band(World& w, int band) {
   Grid& g = w.grid;
   double* const arrays[3] = {g.mass.data(), g.px.data(), g.py.data()};
   const StencilWeights* const weights = w.weights.data();
-  scatter_in_runs(arrays, g.stride, w.order.data(), w.band_start[band], w.band_start[band + 1],
-                  weights, [&](int p, Lane4(&rows)[3][3]) {
-                    const StencilWeights& st = weights[p];
-                    const double m = pts.mass[p], mvx = m * pts.vx[p], mvy = m * pts.vy[p];
-                    for (int b = 0; b < 3; ++b) {
-                      const Lane4 S = x_weights(st) * st.wy[b];  // S_ip, Eq. (12)
-                      rows[0][b] += S * m;                       // Eq. (26)
-                      rows[1][b] += S * mvx;                     // Eq. (27)
-                      rows[2][b] += S * mvy;
-                    }
-                  });
+  scatter_band_in_runs(w, band, arrays, [&](int p, Lane4(&rows)[3][3]) {
+    const StencilWeights& st = weights[p];
+    const double m = pts.mass[p], mvx = m * pts.vx[p], mvy = m * pts.vy[p];
+    for (int b = 0; b < 3; ++b) {
+      const Lane4 S = x_weights(st) * st.wy[b];  // S_ip, Eq. (12)
+      rows[0][b] += S * m;                       // Eq. (26)
+      rows[1][b] += S * mvx;                     // Eq. (27)
+      rows[2][b] += S * mvy;
+    }
+  });
 }
 
 }  // namespace
