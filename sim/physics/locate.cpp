@@ -48,11 +48,13 @@ void throw_point_left_grid(const World& w) {
 
 namespace {
 
-// The bin of base node (i, j): row-major from (bin_i0, bin_j0); -1 off the bins.
-int bin_of(const World& w, int i, int j) {
-  const int bi = i - w.bin_i0, bj = j - w.bin_j0;
-  if (bi < 0 || bi >= w.bin_width || bj < 0 || bj * w.bin_width >= w.bins) return -1;
-  return bj * w.bin_width + bi;
+// The bin of base node (i, j): row-major from (bin_i0, bin_j0); -1 off the
+// bins. For one node (I = int) or eight, a node a lane (I = Int8).
+template <class I>
+I bin_of(const World& w, const I& i, const I& j) {
+  const I bi = i - w.bin_i0, bj = j - w.bin_j0;
+  const auto on = (bi >= 0) & (bi < w.bin_width) & (bj >= 0) & (bj * w.bin_width < w.bins);
+  return on ? bj * w.bin_width + bi : I{} - 1;
 }
 
 // Thread t's counts, one per bin.
@@ -130,9 +132,7 @@ void compute_stencils(World& w, int first_block, int end_block, int* counts, int
     const Int8 inside = (x - x == 0) & (y - y == 0) & (base_i >= 0) & (base_j >= 0) &
                         (base_i + 2 < g.nx) & (base_j + 2 < g.ny);
     // Bins of the points inside only (the others' base nodes may be anything).
-    const Int8 bi = (inside & base_i) - w.bin_i0, bj = (inside & base_j) - w.bin_j0;
-    const Int8 on_bins = (bi >= 0) & (bi < w.bin_width) & (bj >= 0) & (bj * w.bin_width < w.bins);
-    const Int8 bin = on_bins ? bj * w.bin_width + bi : Int8{} - 1;
+    const Int8 bin = bin_of(w, inside & base_i, inside & base_j);
     for (int l = 0; l < count; ++l) {
       if (!inside[l]) {
         bad = std::min(bad, scene_index_of(w, first + l));
