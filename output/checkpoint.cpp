@@ -2,6 +2,7 @@
 
 #include "output/checksum.hpp"
 #include "sim/io/binary_io.hpp"
+#include "sim/io/file_bytes.hpp"
 
 namespace app {
 
@@ -48,7 +49,7 @@ void write_checkpoint(const fs::path& file, const Checkpoint& c) {
 }
 
 Checkpoint read_checkpoint(const fs::path& file) {
-  std::string bytes = read_file_bytes(
+  std::string bytes = sim::read_file_bytes(
       file, file.string() + ": no checkpoint here (a run writes one with --checkpoint-every, "
                             "or when stopped by Ctrl-C or SIGTERM)");
   sim::BinaryReader r(bytes, file.string());

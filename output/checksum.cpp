@@ -4,7 +4,6 @@
 
 #include <cstdio>
 #include <cstring>
-#include <fstream>
 
 #include "sim/io/atomic_file.hpp"
 
@@ -42,25 +41,6 @@ void strip_checksum(std::string& bytes, const std::filesystem::path& file) {
                           hex(computed) + ", stored " + hex(stored) +
                           "): the file is damaged or truncated");
   bytes.resize(bytes.size() - n);
-}
-
-// Sized from the file and read in one call: a stream copied into a string
-// stream grew its buffer by doubling and then copied it out, three copies of
-// a 48 MB frame of 4 M points, each into freshly faulted pages (issue 17,
-// twenty-third pass, bench/README.md).
-std::string read_file_bytes(const std::filesystem::path& file, const std::string& missing,
-                            std::string buffer) {
-  std::ifstream in(file, std::ios::binary | std::ios::ate);
-  if (!in) throw sim::StateError(missing);
-  const std::streamoff size = in.tellg();
-  if (size < 0) throw sim::StateError(missing);
-  std::string bytes = std::move(buffer);
-  bytes.resize(static_cast<std::size_t>(size));  // fills only past its old size
-  in.seekg(0);
-  if (!in.read(bytes.data(), size)) throw sim::StateError(file.string() + ": read " +
-                                                        std::to_string(in.gcount()) + " of " +
-                                                        std::to_string(size) + " bytes");
-  return bytes;
 }
 
 void write_bytes_atomically(const std::filesystem::path& file, const sim::BinaryWriter& w) {

@@ -23,11 +23,6 @@ void append_checksum(sim::BinaryWriter& w);
 // them, then removes them. Throws sim::StateError naming `file` if not.
 void strip_checksum(std::string& bytes, const std::filesystem::path& file);
 
-// The whole of `file`, in `buffer`'s memory where it is large enough; throws
-// sim::StateError(`missing`) if it cannot be opened.
-std::string read_file_bytes(const std::filesystem::path& file, const std::string& missing,
-                            std::string buffer = {});
-
 // Writes w's bytes to `file` under a temporary name, then renames it.
 void write_bytes_atomically(const std::filesystem::path& file, const sim::BinaryWriter& w);
 

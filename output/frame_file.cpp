@@ -2,6 +2,7 @@
 
 #include "output/checksum.hpp"
 #include "sim/io/binary_io.hpp"
+#include "sim/io/file_bytes.hpp"
 
 namespace app {
 
@@ -35,7 +36,7 @@ std::string write_frame_file(const std::filesystem::path& file, const Frame& f,
 }
 
 void read_frame_file(const std::filesystem::path& file, Frame& f, std::string& bytes) {
-  bytes = read_file_bytes(file, file.string() + ": cannot read the captured frame",
+  bytes = sim::read_file_bytes(file, file.string() + ": cannot read the captured frame",
                           std::move(bytes));
   sim::BinaryReader r(bytes, file.string());
   if (bytes.size() < 8 || r.get<std::uint64_t>() != kMagic)

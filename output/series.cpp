@@ -163,7 +163,6 @@ std::vector<SeriesRow> read_series(const fs::path& file) {
 SeriesRecorder::SeriesRecorder(const sim::Scenario& scenario, fs::path out_dir)
     : scenario_(scenario), out_(std::move(out_dir)), font_(std::make_unique<render::Font>()) {}
 
-
 void SeriesRecorder::add(SeriesRow row) {
   // The end of a stage at a frame time: the same state, written once.
   if (!rows_.empty() && rows_.back().stage == row.stage && rows_.back().time == row.time)

@@ -5,6 +5,7 @@
 
 #include "output/checksum.hpp"
 #include "sim/io/atomic_file.hpp"
+#include "sim/io/file_bytes.hpp"
 
 namespace app {
 
@@ -21,7 +22,7 @@ constexpr std::uint64_t kMagic = 0x4c53434143484501ULL;
 // stops a run.
 std::string read_cached_state(const fs::path& file) {
   try {
-    std::string bytes = read_file_bytes(file, file.string() + ": cannot read");
+    std::string bytes = sim::read_file_bytes(file, file.string() + ": cannot read");
     sim::BinaryReader r(bytes, file.string());
     if (bytes.size() < 8 || r.get<std::uint64_t>() != kMagic)
       r.fail("not a cached state of this version of landslide (an older build's, without a "

@@ -4,12 +4,12 @@
 #include <cctype>
 #include <charconv>
 #include <cstdlib>
-#include <fstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "sim/io/atomic_file.hpp"
+#include "sim/io/file_bytes.hpp"
 
 namespace sim {
 
@@ -174,21 +174,10 @@ std::vector<double> read_array(const std::string& text, const std::string& file,
   return values;
 }
 
-// The whole file, read into a string of its size at once.
-std::string read_whole_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary | std::ios::ate);
-  if (!in) throw std::runtime_error(path + ": cannot read");
-  std::string text(static_cast<std::size_t>(std::max<std::streamoff>(in.tellg(), 0)), '\0');
-  in.seekg(0);
-  if (!in.read(text.data(), static_cast<std::streamsize>(text.size())))
-    throw std::runtime_error(path + ": cannot read");
-  return text;
-}
-
 }  // namespace
 
 PointState read_vtu(const std::string& path) {
-  const std::string text = read_whole_file(path);
+  const std::string text = read_file_bytes(path, path + ": cannot read");
   const std::size_t at = text.find("NumberOfPoints=\"");
   if (at == std::string::npos) throw std::runtime_error(path + ": not a .vtu point file");
   const std::size_t n = std::strtoull(text.c_str() + at + 16, nullptr, 10);
