@@ -22,8 +22,14 @@
 // cell order of a copy of the world, each after one more step, whether due
 // or not: the sort alone, one figure per sort (the first ones size the
 // sort's scratch arrays), after the hash, which they do not touch.
+// --whole-step then times sim::step itself, as the time loop calls it (no
+// barrier between phases: a band waits only for its neighbours' marks),
+// on 1 thread and on N (--threads, at least 2) in turns, three rounds, each
+// on a copy of the world: ns per point-step, each thread's own work (its
+// pace's seconds, waits left out) and where the bands were split. Where one
+// thread works longer than the other, the rest is the other's wait.
 //   build/bench/phases [REFINE] [STEPS] [--own-strength] [--scene-order] [--mixed] [--threads N]
-//                      [--scene NAME] [--sorts N]
+//                      [--scene NAME] [--sorts N] [--whole-step]
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
@@ -32,6 +38,7 @@
 #include <numeric>
 #include <random>
 #include <algorithm>
+#include <map>
 #include <omp.h>
 #include <string>
 #include <vector>
@@ -40,6 +47,7 @@
 #include "sim/physics/point_order.hpp"
 #include "sim/physics/point_strength.hpp"
 #include "sim/physics/step.hpp"
+#include "sim/physics/team.hpp"
 #include "sim/scene/seed.hpp"
 
 namespace {
@@ -55,10 +63,43 @@ struct Hash {
   }
 };
 
+// `steps` whole steps of a copy of `w` on a team of `threads`, after 5
+// untimed ones that size its scratch; prints the figures --whole-step names.
+void time_whole_steps(const sim::World& w, const sim::StepInput& in, int steps, int threads) {
+  omp_set_num_threads(threads);
+  sim::World c = w;
+  sim::StepReport report;
+  for (int k = 0; k < 5; ++k) sim::step(c, in, report);
+  std::vector<double> worked(static_cast<std::size_t>(threads), 0.0);
+  std::map<std::vector<int>, int> splits;  // the bands' split: steps that had it
+  const Clock::time_point start = Clock::now();
+  for (int k = 0; k < steps; ++k) {
+    if (sim::sort_due(c, k)) sim::sort_points_by_cell(c);
+    sim::step(c, in, report);
+    if (threads == 1) continue;
+    ++splits[std::vector<int>(c.thread_bands.begin() + 1, c.thread_bands.end() - 1)];
+    for (int t = 0; t < threads; ++t) worked[t] += c.thread_pace[t].worked;
+  }
+  const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  const double point_steps = static_cast<double>(c.points.size()) * steps;
+  std::printf("%d thread%s: %5.1f ns/pt-step", threads, threads > 1 ? "s" : "",
+              seconds / point_steps * 1e9);
+  if (threads > 1) {
+    std::printf("; each thread's work");
+    for (double t : worked) std::printf(" %.1f", t / point_steps * 1e9);
+    std::printf(" ns/pt-step; split of %zu bands at", c.band_start.size() - 1);
+    for (const auto& [at, count] : splits) {
+      for (int b : at) std::printf(" %d", b);
+      std::printf(" (%d steps)", count);
+    }
+  }
+  std::printf("\n");
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  bool own = false, sort = true, mixed = false;
+  bool own = false, sort = true, mixed = false, whole = false;
   int threads = 1, sorts = 0;
   std::string scene;
   for (; argc > 1; --argc) {
@@ -73,6 +114,7 @@ int main(int argc, char** argv) {
       scene = last;
       --argc;
     } else if (last == "--own-strength") own = true;
+    else if (last == "--whole-step") whole = true;
     else if (last == "--scene-order") sort = false;
     else if (last == "--mixed") mixed = true;
     else break;
@@ -82,7 +124,7 @@ int main(int argc, char** argv) {
       (!scene.empty() && refine != 1)) {
     std::fprintf(stderr, "usage: phases [REFINE >= 1] [STEPS >= 1] [--own-strength] "
                          "[--scene-order] [--mixed] [--threads N >= 1] [--scene NAME, REFINE 1] "
-                         "[--sorts N >= 0]\n");
+                         "[--sorts N >= 0] [--whole-step]\n");
     return 2;
   }
   // Everything outside the timed phases' own region (the warm-up steps, the
@@ -172,6 +214,11 @@ int main(int argc, char** argv) {
       std::printf(" %.1f", sorted / static_cast<double>(copy.points.size()) * 1e9);
     }
     std::printf("\n");
+  }
+  if (whole) {
+    sim::follow_free_cores(false);  // the team as asked, on a loaded machine too
+    for (int round = 0; round < 3; ++round)
+      for (const int team : {1, std::max(threads, 2)}) time_whole_steps(w, in, steps, team);
   }
   return 0;
 }
