@@ -11,6 +11,12 @@ namespace sim {
 
 namespace {
 
+// The index of the cell that coordinate x lies in along an axis of `count`
+// cells of size h from `origin`, clamped to the axis.
+int cell_along(double x, double origin, double h, int count) {
+  return std::clamp(static_cast<int>((x - origin) / h), 0, count - 1);
+}
+
 // The grid cells holding soil, labelled into 8-connected groups, and the
 // group with the most soil points: the main body. A lone point or clump
 // thrown off the slide is not part of it.
@@ -21,9 +27,7 @@ struct MainBody {
   std::size_t soil_points = 0, main_points = 0;
 
   int cell(const Grid& g, double x, double y) const {
-    const int i = std::clamp(static_cast<int>((x - g.origin_x) / g.h), 0, nx - 1);
-    const int j = std::clamp(static_cast<int>((y - g.origin_y) / g.h), 0, ny - 1);
-    return j * nx + i;
+    return cell_along(y, g.origin_y, g.h, ny) * nx + cell_along(x, g.origin_x, g.h, nx);
   }
   // For a soil point at (x, y).
   bool holds(const Grid& g, double x, double y) const { return label[cell(g, x, y)] == biggest; }
@@ -126,7 +130,7 @@ struct BodyTally {
       if (std::fabs(ratio - 1.0) <= kPackedDensityBand) packed_mass += pts.mass[p];
       if (pts.density[p] < w.materials[mat].critical_density) disconnected_mass += pts.mass[p];
       if (!body.holds(g, pts.x[p], pts.y[p])) continue;
-      const int i = std::clamp(static_cast<int>((pts.x[p] - g.origin_x) / g.h), 0, g.nx - 1);
+      const int i = cell_along(pts.x[p], g.origin_x, g.h, g.nx);  // top: a column of nodes
       top[i] = std::max(top[i], pts.y[p]);
       base = std::min(base, pts.y[p]);
       peak = std::max(peak, pts.y[p]);
