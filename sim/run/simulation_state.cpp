@@ -91,13 +91,28 @@ auto point_arrays(P& p) {
                                         &p.x0,  &p.y0,  &p.ref_x, &p.ref_y};
 }
 
+// APIC's affine velocities, saved after the point arrays where the scene
+// takes that transfer.
+template <class P>
+auto affine_arrays(P& p) {
+  return std::array<decltype(&p.cxx), 4>{&p.cxx, &p.cxy, &p.cyx, &p.cyy};
+}
+
+// A random field's strength of each point, saved where one was drawn; the
+// returns are rebuilt from it.
+template <class S>
+auto strength_arrays(S& s) {
+  return std::array<decltype(&s.cohesion), 2>{&s.cohesion, &s.friction_angle};
+}
+
 // The size of a saved state, within its header and stage results: the
-// point arrays it holds (save_state below).
+// point arrays it holds (save_state below) and the two bytes of each point.
 std::size_t state_bytes_about(const World& w) {
   constexpr std::size_t kHeaderBytes = 64 * 1024;
-  const std::size_t doubles = point_arrays(w.points).size() +
-                              (w.transfer == TransferScheme::Apic ? 4 : 0) +
-                              (w.strength.active() ? 2 : 0);
+  const std::size_t doubles =
+      point_arrays(w.points).size() +
+      (w.transfer == TransferScheme::Apic ? affine_arrays(w.points).size() : 0) +
+      (w.strength.active() ? strength_arrays(w.strength).size() : 0);
   return w.points.size() * (doubles * sizeof(double) + 2) + kHeaderBytes;
 }
 
@@ -209,14 +224,10 @@ std::string Simulation::save_state(std::string buffer) const {
   w.put_vector(pts.material, from);
   w.put_vector(pts.yielded, from);
   if (world_.transfer == TransferScheme::Apic)
-    for (const std::vector<double>* a : {&pts.cxx, &pts.cxy, &pts.cyx, &pts.cyy})
-      w.put_vector(*a, from);
-  // Per-point strength of a random field; the returns are rebuilt from it.
+    for (const std::vector<double>* a : affine_arrays(pts)) w.put_vector(*a, from);
   w.put(world_.strength.active());
-  if (world_.strength.active()) {
-    w.put_vector(world_.strength.cohesion, from);
-    w.put_vector(world_.strength.friction_angle, from);
-  }
+  if (world_.strength.active())
+    for (const std::vector<double>* a : strength_arrays(world_.strength)) w.put_vector(*a, from);
   return w.take();
 }
 
@@ -260,13 +271,13 @@ void Simulation::restore_state(const std::string& bytes, const std::string& labe
   pts.material = rd.get_vector<std::uint8_t>(n, "the material array");
   pts.yielded = rd.get_vector<std::uint8_t>(n, "the yielded array");
   if (world_.transfer == TransferScheme::Apic)
-    for (std::vector<double>* a : {&pts.cxx, &pts.cxy, &pts.cyx, &pts.cyy})
+    for (std::vector<double>* a : affine_arrays(pts))
       *a = rd.get_vector<double>(n, "an affine velocity array");
   PointStrength& strength = world_.strength;
   strength = PointStrength{};
   if (rd.get<bool>()) {
-    strength.cohesion = rd.get_vector<double>(n, "the per-point cohesion");
-    strength.friction_angle = rd.get_vector<double>(n, "the per-point friction angle");
+    for (std::vector<double>* a : strength_arrays(strength))
+      *a = rd.get_vector<double>(n, "a per-point strength array");
     rebuild_point_strength(world_);
   }
   if (!rd.at_end()) rd.fail("bytes after the end of the state");
