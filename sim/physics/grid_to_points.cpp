@@ -1,0 +1,147 @@
+// The velocity and position update (grid -> point, Eqs. 29 and 30) with the
+// paper's FLIP-like increments, and the band sums it takes on the way: the
+// gravity work, the kinetic energies, what the damping of the gravity stage
+// and the walls take, and the signal speed that sets the next time step.
+#include <algorithm>
+#include <cmath>
+
+#include "sim/physics/bands.hpp"
+#include "sim/physics/step.hpp"
+
+namespace sim {
+
+namespace {
+
+// What G2P writes and reads of the points, as raw pointers: the band's sums
+// stay in registers instead of being reloaded after every store to a point
+// array.
+struct PointArrays {
+  double *x, *y, *vx, *vy;
+  const double* mass;
+  const std::uint8_t* material;
+};
+
+// A band's sums as its points are updated, added point by point in the
+// band's order (sim/physics/bands.hpp).
+struct BandTally {
+  double gravity_work = 0, kinetic = 0, moving = 0, damped = 0, walled = 0;
+};
+
+// The walls' share of a point's velocity change, w = sum_i S_ip held_a_i, as
+// |w|^2; only for points whose stencil a wall acts on.
+double walled_squared(const Grid& g, const StencilWeights& st) {
+  Lane4 swx{}, swy{};
+  for (int b = 0; b < 3; ++b) {
+    const int row = g.node(st.base_i, st.base_j + b);
+    const Lane4 S = x_weights(st) * st.wy[b];
+    swx += S * load4(&g.held_ax[row]);
+    swy += S * load4(&g.held_ay[row]);
+  }
+  const double wx = sum3(swx), wy = sum3(swy);
+  return wx * wx + wy * wy;
+}
+
+// The sums S_ip a_i and S_ip v_i of two points at once, one in each half of
+// a Lane8, as {ax_a, ax_c, ay_a, ay_c, vx_a, vx_c, vy_a, vy_c}.
+__attribute__((always_inline)) inline Lane8 gather_two(const Grid& g, const StencilWeights& a,
+                                                       const StencilWeights& c) {
+  Lane8 sums[4] = {};
+  for (int b = 0; b < 3; ++b) {
+    const int ra = g.node(a.base_i, a.base_j + b), rc = g.node(c.base_i, c.base_j + b);
+    const Lane8 S = join4(x_weights(a) * a.wy[b], x_weights(c) * c.wy[b]);
+    sums[0] += S * load4x2(g.ax.data(), ra, rc);
+    sums[1] += S * load4x2(g.ay.data(), ra, rc);
+    sums[2] += S * load4x2(g.vx.data(), ra, rc);
+    sums[3] += S * load4x2(g.vy.data(), ra, rc);
+  }
+  return sum3_of_halves(sums[0], sums[1], sums[2], sums[3]);
+}
+
+// The new velocities and positions of points p and q (lanes 0 and 1) from
+// their sums S_ip a_i and S_ip v_i (gather_two), and their terms of the
+// band's sums, computed side by side and added p first; q only where `both`
+// (q is p for a band's odd last point). `fastest` keeps each material's
+// largest |v_p|^2. On one thread the column's G2P went from 9.3 to 8.8 ns per
+// point with the pair's terms in Lane2 (issue 17, eleventh pass); as free
+// functions without always_inline it took 12.1.
+__attribute__((always_inline)) inline void update_two(const World& w, const PointArrays& a,
+                                                      const StepInput& in, double keep, int p,
+                                                      int q, const Lane8& sums, bool both,
+                                                      BandTally& t, double* fastest) {
+  const Lane2 ax = half2(sums, 0), ay = half2(sums, 1);
+  const Lane2 vx = half2(sums, 2), vy = half2(sums, 3);
+  const Lane2 dx = in.dt * vx, dy = in.dt * vy;         // Eq. (29)
+  const Lane2 ux = Lane2{a.vx[p], a.vx[q]} + in.dt * ax;  // Eq. (30)
+  const Lane2 uy = Lane2{a.vy[p], a.vy[q]} + in.dt * ay;
+  const Lane2 kx = ux * keep, ky = uy * keep;  // damping of the gravity stage
+  const Lane2 m{a.mass[p], a.mass[q]};
+  const Lane2 v2 = kx * kx + ky * ky;
+  const Lane2 gravity_terms = m * (in.gravity[0] * dx + in.gravity[1] * dy);
+  const Lane2 kinetic_terms = 0.5 * m * v2, moving_terms = 0.5 * m * (vx * vx + vy * vy);
+  const Lane2 damped_terms = 0.5 * m * (ux * ux + uy * uy - v2);
+  for (int l = 0; l < (both ? 2 : 1); ++l) {
+    const int r = l == 0 ? p : q;
+    a.x[r] += dx[l];
+    a.y[r] += dy[l];
+    a.vx[r] = kx[l];
+    a.vy[r] = ky[l];
+    t.gravity_work += gravity_terms[l];
+    t.kinetic += kinetic_terms[l];
+    t.moving += moving_terms[l];
+    t.damped += damped_terms[l];
+    fastest[a.material[r]] = std::max(fastest[a.material[r]], v2[l]);
+    // Zero, and not added, for a point whose stencil no wall acts on.
+    const StencilWeights& st = w.weights[r];
+    if (w.grid.reaches_walls(st.base_i, st.base_j))
+      t.walled += 0.5 * m[l] * in.dt * in.dt * walled_squared(w.grid, st);
+  }
+}
+
+}  // namespace
+
+// The points of each band two by two, each pair updated in its order; where
+// a band has an odd count, its last point in both halves, updated once.
+void grid_to_points(World& w, const StepInput& in) {
+  const double keep = 1.0 / (1.0 + in.damping);  // v := v / (1 + theta)
+  Particles& pts = w.points;
+  const PointArrays a{pts.x.data(),  pts.y.data(),    pts.vx.data(),
+                      pts.vy.data(), pts.mass.data(), pts.material.data()};
+  const int kinds = static_cast<int>(w.materials.size());
+  gather_own_bands(w, [&](int band) {
+    BandTally t;
+    // The band's signal speed max_p (c_p + |v_p|) from the largest |v_p|^2 of
+    // each material: sqrt and + round correctly, so they keep order, and
+    // c + sqrt(max v^2) is the largest c + sqrt(v^2) bit for bit, at one
+    // square root per material instead of one per point.
+    double fastest[256];
+    std::fill(fastest, fastest + kinds, -1.0);
+    const int end = w.band_start[band + 1];
+    int s = w.band_start[band];
+    for (; s + 1 < end; s += 2) {
+      const int p = w.order[s], q = w.order[s + 1];
+      update_two(w, a, in, keep, p, q, gather_two(w.grid, w.weights[p], w.weights[q]), true, t,
+                 fastest);
+    }
+    if (s < end) {
+      const int p = w.order[s];
+      update_two(w, a, in, keep, p, p, gather_two(w.grid, w.weights[p], w.weights[p]), false, t,
+                 fastest);
+    }
+    double signal = 0;
+    for (int k = 0; k < kinds; ++k)
+      if (fastest[k] >= 0)
+        signal = std::max(signal, w.materials[k].wave_speed + std::sqrt(fastest[k]));
+    store_point_sums(w, band, {t.gravity_work, t.kinetic, t.moving, t.damped, signal, t.walled});
+  });
+}
+
+double max_signal_speed(const World& w) {
+  const Particles& pts = w.points;
+  double signal = 0;
+  for (std::size_t p = 0; p < pts.size(); ++p)
+    signal = std::max(signal, w.materials[pts.material[p]].wave_speed +
+                                  std::hypot(pts.vx[p], pts.vy[p]));
+  return signal;
+}
+
+}  // namespace sim
