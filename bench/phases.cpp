@@ -25,9 +25,10 @@
 // --whole-step then times sim::step itself, as the time loop calls it (no
 // barrier between phases: a band waits only for its neighbours' marks),
 // on 1 thread and on N (--threads, at least 2) in turns, three rounds, each
-// on a copy of the world: ns per point-step, each thread's own work (its
-// pace's seconds, waits left out) and where the bands were split. Where one
-// thread works longer than the other, the rest is the other's wait.
+// on a copy of the world: ns per point-step, each thread's own work from the
+// grid's reset to G2P (its pace's seconds, waits left out; locate is folded
+// into the next step's) and where the bands were split. Where one thread
+// works longer than the other, the difference is mostly the other's wait.
 //   build/bench/phases [REFINE] [STEPS] [--own-strength] [--scene-order] [--mixed] [--threads N]
 //                      [--scene NAME] [--sorts N] [--whole-step]
 #include <chrono>
