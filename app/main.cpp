@@ -28,14 +28,9 @@ std::function<void(double)> positive_seconds(double& target) {
   };
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-  CLI::App cli{"Landslide Studio: GIMP landslide simulation, painted off-screen"};
-  cli.set_version_flag("--version", LANDSLIDE_VERSION);
-  cli.require_subcommand(1);
-
-  app::RunOptions run;
+// Each subcommand's arguments, read into the options its command takes
+// (app/commands.hpp); `new` and `sweep` declare theirs beside their commands.
+CLI::App* add_run_command(CLI::App& cli, app::RunOptions& run) {
   CLI::App* run_cmd = cli.add_subcommand("run", "Run a scenario and write its outputs");
   run_cmd->add_option("scenario", run.scenario, "Scenario JSON file")->required();
   run_cmd->add_option("--out", run.out_dir, "Output directory")->required();
@@ -53,8 +48,10 @@ int main(int argc, char** argv) {
                     "is refused)");
   run_cmd->add_flag("--allow-long", run.allow_long,
                     "Run a scene whose estimate passes the limits (time, steps, memory, disk)");
+  return run_cmd;
+}
 
-  app::ResumeOptions resume;
+CLI::App* add_resume_command(CLI::App& cli, app::ResumeOptions& resume) {
   CLI::App* resume_cmd = cli.add_subcommand(
       "resume", "Continue a stopped run from DIR/checkpoint.lsck, as if it had never stopped");
   resume_cmd->add_option("dir", resume.dir, "The stopped run's output directory")->required();
@@ -65,8 +62,10 @@ int main(int argc, char** argv) {
       "Go on writing checkpoints every this many simulated seconds");
   resume_cmd->add_flag("--allow-long", resume.allow_long,
                        "Go on although the estimate of what is left passes the limits");
+  return resume_cmd;
+}
 
-  app::RunOptions check;
+CLI::App* add_check_command(CLI::App& cli, app::RunOptions& check) {
   CLI::App* check_cmd = cli.add_subcommand(
       "check", "Everything `run` checks before simulating, and the run's estimate; write nothing");
   check_cmd->add_option("scenario", check.scenario, "Scenario JSON file")->required();
@@ -78,9 +77,12 @@ int main(int argc, char** argv) {
                       "Accept an --out that holds an earlier run's outputs (run would remove them)");
   check_cmd->add_flag("--allow-long", check.allow_long,
                       "Accept an estimate past the limits (print it, exit 0)");
+  return check_cmd;
+}
 
-  app::RenderOptions render;
-  std::vector<double> range;
+// --range's two numbers land in `range`; main makes them render.range.
+CLI::App* add_render_command(CLI::App& cli, app::RenderOptions& render,
+                             std::vector<double>& range) {
   CLI::App* render_cmd =
       cli.add_subcommand("render", "Re-paint saved VTK states without simulating");
   render_cmd->add_option("input", render.input, "A .vtu file, or a run directory (DIR/vtk/points.pvd)")
@@ -102,8 +104,10 @@ int main(int argc, char** argv) {
   render_cmd->add_flag("--series", render.series,
                        "Put the run's series plot (RUN/series.csv) beside each frame, marked at "
                        "its time");
+  return render_cmd;
+}
 
-  app::PanelOptions panel;
+CLI::App* add_panel_command(CLI::App& cli, app::PanelOptions& panel) {
   CLI::App* panel_cmd =
       cli.add_subcommand("panel", "Compose PNGs with captions into one rows x cols page");
   panel_cmd->add_option("out", panel.out, "Output .png")->required();
@@ -112,8 +116,10 @@ int main(int argc, char** argv) {
   panel_cmd->add_option("--title", panel.title, "Title above the panel");
   panel_cmd->add_option("--cols", panel.cols, "Images per row (default 2)")
       ->check(CLI::Range(1, 64));
+  return panel_cmd;
+}
 
-  app::GalleryOptions gallery;
+CLI::App* add_gallery_command(CLI::App& cli, app::GalleryOptions& gallery) {
   CLI::App* gallery_cmd = cli.add_subcommand(
       "gallery", "Regenerate the paper's figures (5, 6, 9-12), the phi = 20 animation, the four "
       "friction angles side by side and (not with --quick) the Monte Carlo runout");
@@ -122,18 +128,43 @@ int main(int argc, char** argv) {
                           "Folder of the paper-slope scenarios (default: scenarios)");
   gallery_cmd->add_flag("--quick", gallery.quick,
                         "Every run at the 1661-point resolution (h = 1.127 m), for a fast check");
+  return gallery_cmd;
+}
 
-  app::ValidateOptions validate;
+CLI::App* add_validate_command(CLI::App& cli, app::ValidateOptions& validate) {
   CLI::App* validate_cmd =
       cli.add_subcommand("validate", "Run the validation suite and print its table");
   validate_cmd->add_option("--scenarios", validate.scenarios, "Scenario folder (default: scenarios)");
   validate_cmd->add_flag("--quick", validate.quick, "Coarse resolutions only (the CI version)");
   validate_cmd->add_flag("--finest", validate.finest,
                          "Also the Bui column at h = 1.25 mm (minutes on one thread; not with --quick)");
+  return validate_cmd;
+}
 
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App cli{"Landslide Studio: GIMP landslide simulation, painted off-screen"};
+  cli.set_version_flag("--version", LANDSLIDE_VERSION);
+  cli.require_subcommand(1);
+
+  app::RunOptions run;
+  CLI::App* run_cmd = add_run_command(cli, run);
+  app::ResumeOptions resume;
+  CLI::App* resume_cmd = add_resume_command(cli, resume);
+  app::RunOptions check;
+  CLI::App* check_cmd = add_check_command(cli, check);
+  app::RenderOptions render;
+  std::vector<double> range;
+  CLI::App* render_cmd = add_render_command(cli, render, range);
+  app::PanelOptions panel;
+  CLI::App* panel_cmd = add_panel_command(cli, panel);
+  app::GalleryOptions gallery;
+  CLI::App* gallery_cmd = add_gallery_command(cli, gallery);
+  app::ValidateOptions validate;
+  CLI::App* validate_cmd = add_validate_command(cli, validate);
   app::NewOptions made;
   CLI::App* new_cmd = app::add_new_command(cli, made);
-
   sweep::SweepOptions sweep;
   CLI::App* sweep_cmd = app::add_sweep_command(cli, sweep);
 
