@@ -6,12 +6,59 @@ namespace sim {
 
 namespace {
 
-// Whether a wall holds the velocity component normal to it (normal) and the
-// one along it (tangential). A friction wall holds neither outright: its
-// contact acts on the momentum each step (sim/physics/wall_friction.cpp).
-void wall_holds(const Wall& wall, bool& normal, bool& tangential) {
-  normal = wall.kind == BoundaryKind::Fixed || wall.kind == BoundaryKind::Roller;
-  tangential = wall.kind == BoundaryKind::Fixed;
+// Node k's holds from one wall: the velocity component normal to it (x for
+// a side wall, y for the base or the top) and, for a no-slip (fixed) wall,
+// the one along it. A friction wall holds neither outright: its contact acts
+// on the momentum each step (sim/physics/wall_friction.cpp).
+void hold_for_wall(Grid& g, int k, const Wall& wall, bool normal_is_x) {
+  const bool normal = wall.kind == BoundaryKind::Fixed || wall.kind == BoundaryKind::Roller;
+  const bool tangential = wall.kind == BoundaryKind::Fixed;
+  (normal_is_x ? g.fix_x : g.fix_y)[k] |= normal;
+  (normal_is_x ? g.fix_y : g.fix_x)[k] |= tangential;
+}
+
+// The wall lines' node indices: the first and last nodes inside the domain.
+struct WallLines {
+  int left, right, bottom, top;
+};
+
+// Walls act on the nodes on their line and on every padding node beyond it,
+// so material that reaches a wall cannot pass through it. Only those nodes
+// are written: the others stay untouched zero pages (node_array.hpp).
+void set_wall_holds(Grid& g, const Boundaries& b, const WallLines& at) {
+  for (int j = 0; j < g.ny; ++j) {
+    for (int i = 0; i < g.nx; ++i) {
+      const int k = g.node(i, j);
+      if (i <= at.left) hold_for_wall(g, k, b.left, true);
+      if (i >= at.right) hold_for_wall(g, k, b.right, true);
+      if (j <= at.bottom) hold_for_wall(g, k, b.bottom, false);
+      if (j >= at.top) hold_for_wall(g, k, b.top, false);
+    }
+  }
+  const auto acts = [](const Wall& wall) { return wall.kind != BoundaryKind::Free; };
+  g.quiet_i_begin = acts(b.left) ? at.left + 1 : 0;
+  g.quiet_i_end = acts(b.right) ? at.right : g.nx;
+  g.quiet_j_begin = acts(b.bottom) ? at.bottom + 1 : 0;
+  g.quiet_j_end = acts(b.top) ? at.top : g.ny;
+}
+
+// The walls with Coulomb friction (sim/physics/wall_friction.hpp), and the
+// node arrays only they use.
+void add_friction_walls(Grid& g, const Boundaries& b, const WallLines& at, std::size_t nodes) {
+  const Wall* sides[4] = {&b.left, &b.right, &b.bottom, &b.top};
+  const FrictionWall lines[4] = {{0, -1.0, 0, 0, at.left + 1, g.origin_x + at.left * g.h},
+                                 {0, +1.0, 0, at.right, g.nx, g.origin_x + at.right * g.h},
+                                 {1, -1.0, 0, 0, at.bottom + 1, g.origin_y + at.bottom * g.h},
+                                 {1, +1.0, 0, at.top, g.ny, g.origin_y + at.top * g.h}};
+  for (int k = 0; k < 4; ++k) {
+    if (sides[k]->kind != BoundaryKind::Friction) continue;
+    g.friction_walls.push_back(lines[k]);
+    g.friction_walls.back().mu = sides[k]->friction;
+  }
+  if (!g.friction_walls.empty()) {
+    for (auto* v : {&g.wall_gap_x, &g.wall_gap_y, &g.wall_impulse_x, &g.wall_impulse_y})
+      v->resize(nodes);
+  }
 }
 
 // Cells needed to cover a length; a length that is a whole number of cells up
@@ -40,56 +87,9 @@ Grid make_grid(const GridSpec& s) {
     v->resize(n);
   g.fix_x.resize(n);
   g.fix_y.resize(n);
-
-  // Walls act on the nodes on their line and on every padding node beyond it,
-  // so material that reaches a wall cannot pass through it.
-  const int left = pad, right = pad + cells_x, bottom = pad, top = pad + cells_y;
-  bool normal = false, tangential = false;
-  for (int j = 0; j < g.ny; ++j) {
-    for (int i = 0; i < g.nx; ++i) {
-      const int k = g.node(i, j);
-      if (i <= left) {
-        wall_holds(s.boundaries.left, normal, tangential);
-        g.fix_x[k] |= normal;
-        g.fix_y[k] |= tangential;
-      }
-      if (i >= right) {
-        wall_holds(s.boundaries.right, normal, tangential);
-        g.fix_x[k] |= normal;
-        g.fix_y[k] |= tangential;
-      }
-      if (j <= bottom) {
-        wall_holds(s.boundaries.bottom, normal, tangential);
-        g.fix_y[k] |= normal;
-        g.fix_x[k] |= tangential;
-      }
-      if (j >= top) {
-        wall_holds(s.boundaries.top, normal, tangential);
-        g.fix_y[k] |= normal;
-        g.fix_x[k] |= tangential;
-      }
-    }
-  }
-  const auto acts = [](const Wall& wall) { return wall.kind != BoundaryKind::Free; };
-  g.quiet_i_begin = acts(s.boundaries.left) ? left + 1 : 0;
-  g.quiet_i_end = acts(s.boundaries.right) ? right : g.nx;
-  g.quiet_j_begin = acts(s.boundaries.bottom) ? bottom + 1 : 0;
-  g.quiet_j_end = acts(s.boundaries.top) ? top : g.ny;
-  const Wall* sides[4] = {&s.boundaries.left, &s.boundaries.right, &s.boundaries.bottom,
-                         &s.boundaries.top};
-  const FrictionWall lines[4] = {{0, -1.0, 0, 0, left + 1, g.origin_x + left * g.h},
-                                 {0, +1.0, 0, right, g.nx, g.origin_x + right * g.h},
-                                 {1, -1.0, 0, 0, bottom + 1, g.origin_y + bottom * g.h},
-                                 {1, +1.0, 0, top, g.ny, g.origin_y + top * g.h}};
-  for (int k = 0; k < 4; ++k) {
-    if (sides[k]->kind != BoundaryKind::Friction) continue;
-    g.friction_walls.push_back(lines[k]);
-    g.friction_walls.back().mu = sides[k]->friction;
-  }
-  if (!g.friction_walls.empty()) {
-    for (auto* v : {&g.wall_gap_x, &g.wall_gap_y, &g.wall_impulse_x, &g.wall_impulse_y})
-      v->resize(n);
-  }
+  const WallLines at{pad, pad + cells_x, pad, pad + cells_y};
+  set_wall_holds(g, s.boundaries, at);
+  add_friction_walls(g, s.boundaries, at, n);
   return g;
 }
 
