@@ -36,6 +36,9 @@ struct GimpShape {
 // bit for bit what the double version gives.
 typedef double Lane8 __attribute__((vector_size(64)));
 typedef std::int64_t Int8 __attribute__((vector_size(64)));
+// Eight bytes, one per point or node (materials, yield flags, wall holds),
+// widened to an Int8 with __builtin_convertvector.
+typedef std::uint8_t Bytes8 __attribute__((vector_size(8)));
 
 inline double abs_of(double x) { return x < 0 ? -x : x; }
 inline Lane8 abs_of(const Lane8& x) { return x < 0 ? -x : x; }

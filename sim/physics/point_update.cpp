@@ -25,9 +25,6 @@ struct MaterialLanes {
   MohrCoulombLanes mohr_coulomb;
 };
 
-// Eight bytes, one per point: materials or yield flags of a group.
-typedef std::uint8_t Bytes8 __attribute__((vector_size(8)));
-
 // Whether eight points are stored one after another, as most groups of a
 // band are while the points are stored in cell order (point_order.hpp): their
 // arrays are then read and written as vectors instead of lane by lane.

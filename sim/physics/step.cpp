@@ -117,7 +117,6 @@ M held(const NodeArray<std::uint8_t>& fix, int k) {
   if constexpr (std::is_same_v<M, bool>) {
     return fix[k] != 0;
   } else {
-    typedef std::uint8_t Bytes8 __attribute__((vector_size(8)));
     Bytes8 bytes;
     std::memcpy(&bytes, &fix[k], sizeof bytes);
     return __builtin_convertvector(bytes != 0, M);  // -1 or 0, widened with its sign
