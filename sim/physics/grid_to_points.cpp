@@ -21,12 +21,6 @@ struct PointArrays {
   const std::uint8_t* material;
 };
 
-// A band's sums as its points are updated, added point by point in the
-// band's order (sim/physics/bands.hpp).
-struct BandTally {
-  double gravity_work = 0, kinetic = 0, moving = 0, damped = 0, walled = 0;
-};
-
 // The walls' share of a point's velocity change, w = sum_i S_ip held_a_i, as
 // |w|^2; only for points whose stencil a wall acts on.
 double walled_squared(const Grid& g, const StencilWeights& st) {
@@ -59,9 +53,9 @@ __attribute__((always_inline)) inline Lane8 gather_two(const Grid& g, const Sten
 
 // The new velocities and positions of points p and q (lanes 0 and 1) from
 // their sums S_ip a_i and S_ip v_i (gather_two), and their terms of the
-// band's sums, computed side by side and added p first; q only where `both`
-// (q is p for a band's odd last point). `fastest` keeps each material's
-// largest |v_p|^2. On one thread the column's G2P went from 9.3 to 8.8 ns per
+// band's sums (t, added point by point in the band's order), computed side
+// by side and added p first; q only where `both` (q is p for a band's odd
+// last point). `fastest` keeps each material's largest |v_p|^2. On one thread the column's G2P went from 9.3 to 8.8 ns per
 // point with the pair's terms in Lane2 (issue 17, eleventh pass); free
 // functions then took 12.1 where lambdas took 8.8. Inlined (always_inline),
 // these take what the lambdas took: 14.4 to 14.5 ns per point on the
@@ -69,7 +63,7 @@ __attribute__((always_inline)) inline Lane8 gather_two(const Grid& g, const Sten
 __attribute__((always_inline)) inline void update_two(const World& w, const PointArrays& a,
                                                       const StepInput& in, double keep, int p,
                                                       int q, const Lane8& sums, bool both,
-                                                      BandTally& t, double* fastest) {
+                                                      PointSums& t, double* fastest) {
   const Lane2 ax = half2(sums, 0), ay = half2(sums, 1);
   const Lane2 vx = half2(sums, 2), vy = half2(sums, 3);
   const Lane2 dx = in.dt * vx, dy = in.dt * vy;         // Eq. (29)
@@ -110,7 +104,7 @@ void grid_to_points(World& w, const StepInput& in) {
                       pts.vy.data(), pts.mass.data(), pts.material.data()};
   const int kinds = static_cast<int>(w.materials.size());
   gather_own_bands(w, [&](int band) {
-    BandTally t;
+    PointSums t{};
     // The band's signal speed max_p (c_p + |v_p|) from the largest |v_p|^2 of
     // each material: sqrt and + round correctly, so they keep order, and
     // c + sqrt(max v^2) is the largest c + sqrt(v^2) bit for bit, at one
@@ -129,11 +123,10 @@ void grid_to_points(World& w, const StepInput& in) {
       update_two(w, a, in, keep, p, p, gather_two(w.grid, w.weights[p], w.weights[p]), false, t,
                  fastest);
     }
-    double signal = 0;
     for (int k = 0; k < kinds; ++k)
       if (fastest[k] >= 0)
-        signal = std::max(signal, w.materials[k].wave_speed + std::sqrt(fastest[k]));
-    store_point_sums(w, band, {t.gravity_work, t.kinetic, t.moving, t.damped, signal, t.walled});
+        t.signal = std::max(t.signal, w.materials[k].wave_speed + std::sqrt(fastest[k]));
+    store_point_sums(w, band, t);
   });
 }
 
