@@ -4,6 +4,7 @@
 // (stress.hpp); M is MaterialConstants or its eight-point form.
 #pragma once
 
+#include "sim/physics/lanes.hpp"
 #include "sim/physics/material.hpp"
 #include "sim/physics/stress.hpp"
 
@@ -16,11 +17,10 @@ namespace sim {
 // `spin` is W_xy dt = (dvx/dy - dvy/dx) dt / 2. sigma_zz does not rotate.
 template <class T>
 void jaumann_rotate(StressOf<T>& s, const T& spin) {
-  const T dxy = spin * (s.yy - s.xx);
-  const T dn = 2.0 * spin * s.xy;
-  s.xx += dn;
-  s.yy -= dn;
-  s.xy += dxy;
+  const T xx = s.xx, yy = s.yy, xy = s.xy, twice_spin = 2.0 * spin;
+  s.xx = fused(twice_spin, xy, xx);
+  s.yy = fused(-twice_spin, xy, yy);
+  s.xy = fused(spin, yy - xx, xy);
 }
 
 // Hooke's law in plane strain on a strain increment (Eq. 21 without the
@@ -28,8 +28,8 @@ void jaumann_rotate(StressOf<T>& s, const T& spin) {
 template <class T, class M>
 void elastic_predictor(StressOf<T>& s, const StrainOf<T>& de, const M& m) {
   const T volumetric = m.lambda * (de.xx + de.yy);
-  s.xx += volumetric + 2.0 * m.shear * de.xx;
-  s.yy += volumetric + 2.0 * m.shear * de.yy;
+  s.xx += fused(de.xx, 2.0 * m.shear, volumetric);
+  s.yy += fused(de.yy, 2.0 * m.shear, volumetric);
   s.xy += 2.0 * m.shear * de.xy;
   s.zz += volumetric;
 }

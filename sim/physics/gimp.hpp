@@ -12,6 +12,8 @@
 #include <cstdint>
 #include <cstring>
 
+#include "sim/physics/lanes.hpp"
+
 namespace sim {
 
 // The grid's cell size h and the points' half-width l_p, with the
@@ -29,17 +31,6 @@ struct GimpShape {
         inv_4hlp(0.25 / (cell * half_width)) {}
 };
 
-// Eight doubles, and eight matching integers, in vector registers (g++
-// vector extensions): the stencils of eight points are computed at once. The
-// weights below are templates on the value type, double or Lane8, written
-// with selects (?:) only, so one text gives both and each lane of a Lane8 is
-// bit for bit what the double version gives.
-typedef double Lane8 __attribute__((vector_size(64)));
-typedef std::int64_t Int8 __attribute__((vector_size(64)));
-// Eight bytes, one per point or node (materials, yield flags, wall holds),
-// widened to an Int8 with __builtin_convertvector.
-typedef std::uint8_t Bytes8 __attribute__((vector_size(8)));
-
 inline double abs_of(double x) { return x < 0 ? -x : x; }
 inline Lane8 abs_of(const Lane8& x) { return x < 0 ? -x : x; }
 inline int floor_to_int(double t) { return static_cast<int>(std::floor(t)); }
@@ -50,6 +41,7 @@ inline Int8 floor_to_int(const Lane8& t) {
 inline double to_real(int i) { return i; }
 inline Lane8 to_real(const Int8& i) { return __builtin_convertvector(i, Lane8); }
 
+
 // The three pieces of the 1D uGIMP weight S(xi) and its derivative dS/dxi,
 // xi = x_p - x_i (method notes, section 1 table). The derivative equals the
 // particle-averaged shape-function gradient of Eq. (13) divided by the
@@ -58,14 +50,14 @@ inline Lane8 to_real(const Int8& i) { return __builtin_convertvector(i, Lane8); 
 // |xi| <= l_p: the particle's domain straddles the node.
 template <class T>
 void gimp_near(const T& xi, const GimpShape& k, T& S, T& dS) {
-  S = 1.0 - (xi * xi + k.lp * k.lp) * k.inv_2hlp;
+  S = fused(-fused(xi, xi, T{} + k.lp * k.lp), k.inv_2hlp, T{} + 1.0);
   dS = -xi * k.inv_hlp;
 }
 // l_p < |xi| <= h - l_p: the domain lies inside one cell, the linear hat.
 template <class T>
 void gimp_hat(const T& xi, const GimpShape& k, T& S, T& dS) {
   const T slope = T{} + k.inv_h;
-  S = 1.0 - abs_of(xi) * k.inv_h;
+  S = fused(-abs_of(xi), k.inv_h, T{} + 1.0);
   dS = xi < 0 ? slope : -slope;
 }
 // h - l_p < |xi| < h + l_p: the domain straddles the cell's far node.
@@ -92,12 +84,6 @@ inline void gimp_weight_1d(double xi, const GimpShape& k, double& S, double& dS)
   }
 }
 
-// Four doubles that the compiler keeps in one vector register (a g++
-// extension; AVX where the build has it, two SSE halves where not). Each lane
-// is computed with plain IEEE arithmetic, so the results do not depend on the
-// vector width.
-typedef double Lane4 __attribute__((vector_size(32)));
-
 inline Lane4 load4(const double* p) {
   Lane4 v;
   std::memcpy(&v, p, sizeof v);
@@ -121,7 +107,6 @@ inline double sum3(const Lane4& v) { return (v[0] + v[1]) + v[2]; }
 inline Lane8 join4(const Lane4& a, const Lane4& b) {
   return __builtin_shufflevector(a, b, 0, 1, 2, 3, 4, 5, 6, 7);
 }
-typedef double Lane2 __attribute__((vector_size(16)));
 // Lanes 2k and 2k + 1 of v.
 inline Lane2 half2(const Lane8& v, int k) { return Lane2{v[2 * k], v[2 * k + 1]}; }
 inline Lane4 low4(const Lane8& v) { return __builtin_shufflevector(v, v, 0, 1, 2, 3); }
@@ -227,9 +212,9 @@ __attribute__((always_inline)) inline void gimp_axis(const T& xp, double origin,
                                                      const GimpShape& k, I& base, T w[3],
                                                      T d[3]) {
   base = floor_to_int((xp - k.lp - origin) * k.inv_h);
-  const T x0 = xp - (origin + to_real(base) * k.h);
-  const T x1 = xp - (origin + to_real(base + 1) * k.h);
-  const T x2 = xp - (origin + to_real(base + 2) * k.h);
+  const T x0 = xp - fused(to_real(base), k.h, T{} + origin);
+  const T x1 = xp - fused(to_real(base + 1), k.h, T{} + origin);
+  const T x2 = xp - fused(to_real(base + 2), k.h, T{} + origin);
   T s_hat, d_hat, s_far, d_far, s_near, d_near;
   gimp_hat(x0, k, s_hat, d_hat);
   gimp_far(x0, k, s_far, d_far);

@@ -28,8 +28,8 @@ double walled_squared(const Grid& g, const StencilWeights& st) {
   for (int b = 0; b < 3; ++b) {
     const int row = g.node(st.base_i, st.base_j + b);
     const Lane4 S = x_weights(st) * st.wy[b];
-    swx += S * load4(&g.held_ax[row]);
-    swy += S * load4(&g.held_ay[row]);
+    swx = fused(S, load4(&g.held_ax[row]), swx);
+    swy = fused(S, load4(&g.held_ay[row]), swy);
   }
   const double wx = sum3(swx), wy = sum3(swy);
   return wx * wx + wy * wy;
@@ -43,10 +43,10 @@ __attribute__((always_inline)) inline Lane8 gather_two(const Grid& g, const Sten
   for (int b = 0; b < 3; ++b) {
     const int ra = g.node(a.base_i, a.base_j + b), rc = g.node(c.base_i, c.base_j + b);
     const Lane8 S = join4(x_weights(a) * a.wy[b], x_weights(c) * c.wy[b]);
-    sums[0] += S * load4x2(g.ax.data(), ra, rc);
-    sums[1] += S * load4x2(g.ay.data(), ra, rc);
-    sums[2] += S * load4x2(g.vx.data(), ra, rc);
-    sums[3] += S * load4x2(g.vy.data(), ra, rc);
+    sums[0] = fused(S, load4x2(g.ax.data(), ra, rc), sums[0]);
+    sums[1] = fused(S, load4x2(g.ay.data(), ra, rc), sums[1]);
+    sums[2] = fused(S, load4x2(g.vx.data(), ra, rc), sums[2]);
+    sums[3] = fused(S, load4x2(g.vy.data(), ra, rc), sums[3]);
   }
   return sum3_of_halves(sums[0], sums[1], sums[2], sums[3]);
 }
@@ -67,8 +67,8 @@ __attribute__((always_inline)) inline void update_two(const World& w, const Poin
   const Lane2 ax = half2(sums, 0), ay = half2(sums, 1);
   const Lane2 vx = half2(sums, 2), vy = half2(sums, 3);
   const Lane2 dx = in.dt * vx, dy = in.dt * vy;         // Eq. (29)
-  const Lane2 ux = Lane2{a.vx[p], a.vx[q]} + in.dt * ax;  // Eq. (30)
-  const Lane2 uy = Lane2{a.vy[p], a.vy[q]} + in.dt * ay;
+  const Lane2 ux = fused(ax, in.dt, Lane2{a.vx[p], a.vx[q]});  // Eq. (30)
+  const Lane2 uy = fused(ay, in.dt, Lane2{a.vy[p], a.vy[q]});
   const Lane2 kx = ux * keep, ky = uy * keep;  // damping of the gravity stage
   const Lane2 m{a.mass[p], a.mass[q]};
   const Lane2 v2 = kx * kx + ky * ky;

@@ -73,7 +73,7 @@ inline bool every(const Int8& m) {
 
 template <class T>
 T dot(const Principal3Of<T>& a, const Principal3Of<T>& b) {
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+  return fused(a[2], b[2], fused(a[1], b[1], a[0] * b[0]));
 }
 
 // Mohr's circle of the in-plane stress: half the difference of the normal
@@ -85,7 +85,7 @@ T half_difference(const StressOf<T>& s) {
 template <class T>
 T circle_radius(const StressOf<T>& s) {
   const T half = half_difference(s);
-  return square_root(half * half + s.xy * s.xy);
+  return square_root(fused(half, half, s.xy * s.xy));
 }
 
 // The principal values sorted, s1 >= s2 >= s3, and where sigma_zz went:
@@ -128,13 +128,13 @@ StressOf<T> from_principal(const Sorted<T>& sorted, const T& cos2, const T& sin2
   const T vb = sorted.zz_first || sorted.zz_at_least_second ? v[2] : v[1];
   const T zz = sorted.zz_first ? v[0] : (sorted.zz_at_least_second ? v[1] : v[2]);
   const T centre = 0.5 * (va + vb), half = 0.5 * (va - vb);
-  return {centre + half * cos2, centre - half * cos2, half * sin2, zz};
+  return {fused(half, cos2, centre), fused(-half, cos2, centre), half * sin2, zz};
 }
 
 // f = k s1 - s3 - sigma_c (mohr_coulomb.hpp): negative inside.
 template <class T, class C>
 T yield_function(const C& mc, const Principal3Of<T>& s) {
-  return mc.k * s[0] - s[2] - mc.sigma_c;
+  return fused(mc.k, s[0], -s[2]) - mc.sigma_c;
 }
 
 template <class T>
@@ -168,8 +168,8 @@ Regions<T> plastic_return(const C& mc, Principal3Of<T>& s, const T& f) {
   const T one = T{} + 1.0;
   const Principal3Of<T> l1{one, one, mc.k}, l2{one, mc.k, mc.k};
   for (int i = 0; i < 3; ++i) {
-    const T plane = s[i] - f * mc.plane_corrector[i];
-    const T edge1 = mc.apex + t1 * l1[i], edge2 = mc.apex + t2 * l2[i];
+    const T plane = fused(-f, mc.plane_corrector[i], s[i]);
+    const T edge1 = fused(t1, l1[i], mc.apex), edge2 = fused(t2, l2[i], mc.apex);
     s[i] = r.apex ? T{} + mc.apex : (r.plane ? plane : (r.edge_s1_s2 ? edge1 : edge2));
   }
   return r;

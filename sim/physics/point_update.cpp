@@ -113,10 +113,10 @@ Lane8 velocity_gradients(const World& w, int p, int q, const SlopeLanes& d) {
     const Lane8 gy = x_weights_ac * pair_halves<k>(d.dy[b]);
     const Lane8 vx = load4x2(g.vx.data(), ra, rc);
     const Lane8 vy = load4x2(g.vy.data(), ra, rc);
-    lxx += vx * gx;
-    lxy += vx * gy;
-    lyx += vy * gx;
-    lyy += vy * gy;
+    lxx = fused(vx, gx, lxx);
+    lxy = fused(vx, gy, lxy);
+    lyx = fused(vy, gx, lyx);
+    lyy = fused(vy, gy, lyy);
   }
   return sum3_of_halves(lxx, lxy, lyx, lyy);
 }
@@ -229,7 +229,7 @@ void scatter_point_force(World& w, int p, const UpdatedLanes& u, int l, const Ve
     const Lane8 S = wx * st.wy[b];
     const Lane8 gx = dx * st.wy[b], gy = wx * u.slopes.dy[b][l];  // grad S_ip
     // f_int = -sigma_p . grad S_ip V_p, Eq. (16); f_ext = m_p b S_ip, Eq. (17).
-    sums.rows[b] += -V * (first * gx + second * gy) + S * mg;
+    sums.rows[b] = fused(fused(first, gx, second * gy), -V, fused(S, mg, sums.rows[b]));
   }
 }
 

@@ -70,9 +70,9 @@ void map_band(World& w, int band) {
     const double m = pts.mass[p], mvx = m * pts.vx[p], mvy = m * pts.vy[p];
     for (int b = 0; b < 3; ++b) {
       const Lane4 S = x_weights(st) * st.wy[b];  // S_ip, Eq. (12)
-      rows[0][b] += S * m;                       // Eq. (26)
-      rows[1][b] += S * mvx;                     // Eq. (27)
-      rows[2][b] += S * mvy;
+      rows[0][b] = fused(S, m, rows[0][b]);      // Eq. (26)
+      rows[1][b] = fused(S, mvx, rows[1][b]);    // Eq. (27)
+      rows[2][b] = fused(S, mvy, rows[2][b]);
     }
   });
 }
@@ -168,8 +168,9 @@ void update_momentum(Grid& g, int k, double dt, double inv_dt) {
   const M hx = held<M>(g.fix_x, k), hy = held<M>(g.fix_y, k);
   const V inv = inverse_mass(at<V>(g.mass, k));
   const V fx = hx ? V{} : at<V>(g.fx, k), fy = hy ? V{} : at<V>(g.fy, k);
-  const V px = at<V>(g.px, k) + dt * fx, py = at<V>(g.py, k) + dt * fy;
-  const V ax = at<V>(g.ax, k) * inv_dt + fx * inv, ay = at<V>(g.ay, k) * inv_dt + fy * inv;
+  const V px = fused(fx, dt, at<V>(g.px, k)), py = fused(fy, dt, at<V>(g.py, k));
+  const V ax = fused(fx, inv, at<V>(g.ax, k) * inv_dt);
+  const V ay = fused(fy, inv, at<V>(g.ay, k) * inv_dt);
   put(g.fx, k, fx);
   put(g.fy, k, fy);
   put(g.px, k, px);

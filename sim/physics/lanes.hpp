@@ -1,0 +1,85 @@
+// The step's vector types, a lane a point (or a stencil node), and the one
+// fused multiply-add the step's formulas use.
+#pragma once
+
+#include <cstdint>
+#include <type_traits>
+
+#if defined(__x86_64__)
+#include <immintrin.h>
+#endif
+
+namespace sim {
+
+// Eight doubles, and eight matching integers, in vector registers (g++
+// vector extensions): the stencils and stresses of eight points are computed
+// at once. The formulas that take them are templates on the value type,
+// double or Lane8, written with selects (?:) only, so one text gives both and
+// each lane of a Lane8 is bit for bit what the double version gives.
+typedef double Lane8 __attribute__((vector_size(64)));
+// Four doubles: a stencil row's three nodes and a spare lane (gimp.hpp), in
+// one AVX register where the build has AVX, two SSE halves where not. Each
+// lane is computed with plain IEEE arithmetic, so the results do not depend
+// on the vector width. Two: a pair of points' values side by side.
+typedef double Lane4 __attribute__((vector_size(32)));
+typedef double Lane2 __attribute__((vector_size(16)));
+typedef std::int64_t Int8 __attribute__((vector_size(64)));
+// Eight bytes, one per point or node (materials, yield flags, wall holds),
+// widened to an Int8 with __builtin_convertvector.
+typedef std::uint8_t Bytes8 __attribute__((vector_size(8)));
+
+// a * b + c rounded once (IEEE 754 fusedMultiplyAdd), for a double or lane by
+// lane: one FMA instruction where the build has one for the width, else
+// __builtin_fma lane by lane (glibc's correctly rounded software fma on a
+// processor without FMA), so the bits do not depend on which. The build never
+// fuses a * b + c by itself (-ffp-contract=off, CMakeLists.txt: g++ would
+// fuse where it chose, other bits on another processor or compiler); the
+// step fuses where `fused` is written, in the same places in its one-point
+// and eight-point forms. Written by lane alone, the vector forms were not
+// made one instruction inside the step's phases: g++ 12 took each lane apart.
+// `b` may be one double for every lane.
+template <class V>
+inline V fused_by_lane(const V& a, const V& b, const V& c) {
+  V r;
+  for (int l = 0; l < static_cast<int>(sizeof(V) / sizeof(double)); ++l)
+    r[l] = __builtin_fma(a[l], b[l], c[l]);
+  return r;
+}
+inline double fused(double a, double b, double c) { return __builtin_fma(a, b, c); }
+#if defined(__FMA__)
+inline Lane2 fused(const Lane2& a, const Lane2& b, const Lane2& c) {
+  return _mm_fmadd_pd(a, b, c);
+}
+inline Lane4 fused(const Lane4& a, const Lane4& b, const Lane4& c) {
+  return _mm256_fmadd_pd(a, b, c);
+}
+#else
+inline Lane2 fused(const Lane2& a, const Lane2& b, const Lane2& c) {
+  return fused_by_lane(a, b, c);
+}
+inline Lane4 fused(const Lane4& a, const Lane4& b, const Lane4& c) {
+  return fused_by_lane(a, b, c);
+}
+#endif
+#if defined(__AVX512F__)
+inline Lane8 fused(const Lane8& a, const Lane8& b, const Lane8& c) {
+  return _mm512_fmadd_pd(a, b, c);
+}
+#elif defined(__FMA__)
+inline Lane8 fused(const Lane8& a, const Lane8& b, const Lane8& c) {  // two halves of four
+  const auto lo = [](const Lane8& v) -> Lane4 { return __builtin_shufflevector(v, v, 0, 1, 2, 3); };
+  const auto hi = [](const Lane8& v) -> Lane4 { return __builtin_shufflevector(v, v, 4, 5, 6, 7); };
+  const Lane4 low = fused(lo(a), lo(b), lo(c)), high = fused(hi(a), hi(b), hi(c));
+  return __builtin_shufflevector(low, high, 0, 1, 2, 3, 4, 5, 6, 7);
+}
+#else
+inline Lane8 fused(const Lane8& a, const Lane8& b, const Lane8& c) {
+  return fused_by_lane(a, b, c);
+}
+#endif
+template <class V, class = std::enable_if_t<!std::is_same_v<V, double>>>
+inline V fused(const V& a, double b, const V& c) {
+  return fused(a, V{} + b, c);
+}
+
+}  // namespace sim
