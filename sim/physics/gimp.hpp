@@ -41,7 +41,6 @@ inline Int8 floor_to_int(const Lane8& t) {
 inline double to_real(int i) { return i; }
 inline Lane8 to_real(const Int8& i) { return __builtin_convertvector(i, Lane8); }
 
-
 // The three pieces of the 1D uGIMP weight S(xi) and its derivative dS/dxi,
 // xi = x_p - x_i (method notes, section 1 table). The derivative equals the
 // particle-averaged shape-function gradient of Eq. (13) divided by the

@@ -63,7 +63,7 @@ struct Grid {
   std::vector<double> row_sums;
 
   // Nodes per row in memory: nx and one spare node that no point weights.
-  // A stencil row is read and written as four nodes (Lane4, gimp.hpp); the
+  // A stencil row is read and written as four nodes (Lane4, lanes.hpp); the
   // fourth, past the stencil, is at worst this spare node of the same row,
   // so it never belongs to a row another thread is writing.
   int stride = 0;

@@ -1,5 +1,5 @@
 // The Mohr-Coulomb return of mohr_coulomb.hpp written once for one point
-// (T = double) and for eight (T = Lane8, gimp.hpp), with selects (?:) in
+// (T = double) and for eight (T = Lane8, lanes.hpp), with selects (?:) in
 // place of branches: every region's result is computed and the trial's own
 // region is kept. Each lane is bit for bit what the one-point form gives;
 // the step runs the eight-point form (sim/physics/point_update.cpp), the tests

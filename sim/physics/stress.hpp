@@ -2,7 +2,7 @@
 // normal stress sigma_zz, which plane strain keeps non-zero. Tension positive.
 //
 // Templates on the number type: T = double for one point, T = Lane8
-// (gimp.hpp) for eight points whose stress is updated at once
+// (lanes.hpp) for eight points whose stress is updated at once
 // (sim/physics/point_update.cpp). The formulas that take them are written once
 // for both.
 #pragma once
