@@ -228,8 +228,9 @@ void scatter_point_force(World& w, int p, const UpdatedLanes& u, int l, const Ve
   for (int b = 0; b < 3; ++b) {
     const Lane8 S = wx * st.wy[b];
     const Lane8 gx = dx * st.wy[b], gy = wx * u.slopes.dy[b][l];  // grad S_ip
+    const Lane8 stress_on_slope = fused(first, gx, second * gy);  // sigma_p . grad S_ip
     // f_int = -sigma_p . grad S_ip V_p, Eq. (16); f_ext = m_p b S_ip, Eq. (17).
-    sums.rows[b] = fused(fused(first, gx, second * gy), -V, fused(S, mg, sums.rows[b]));
+    sums.rows[b] = fused(stress_on_slope, -V, fused(S, mg, sums.rows[b]));
   }
 }
 
