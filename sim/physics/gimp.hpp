@@ -97,19 +97,6 @@ inline Lane8 load8(const double* p) {
 // Lanes 0..2: a stencil row's three nodes; lane 3 is never part of a result.
 inline double sum3(const Lane4& v) { return (v[0] + v[1]) + v[2]; }
 
-// Two points' stencil rows side by side: the gathers of G2P and of the
-// velocity gradient take two points at once in the halves of a Lane8, one
-// vector operation where two Lane4 took two (issue 17, tenth pass: on one
-// thread the column's G2P went from 12.4 to 9.6 ns per point, its stress
-// phase from 26.6 to 24.9, bench/README.md). Lane by lane the operations are
-// the same, so are the bits.
-inline Lane8 join4(const Lane4& a, const Lane4& b) {
-  return __builtin_shufflevector(a, b, 0, 1, 2, 3, 4, 5, 6, 7);
-}
-// Lanes 2k and 2k + 1 of v.
-inline Lane2 half2(const Lane8& v, int k) { return Lane2{v[2 * k], v[2 * k + 1]}; }
-inline Lane4 low4(const Lane8& v) { return __builtin_shufflevector(v, v, 0, 1, 2, 3); }
-inline Lane4 high4(const Lane8& v) { return __builtin_shufflevector(v, v, 4, 5, 6, 7); }
 // The sums of three of both halves of four Lane8 a, b, c, d, in this order:
 // {sum3(low4(a)), sum3(high4(a)), sum3(low4(b)), ..., sum3(high4(d))}. The
 // lanes are moved so that one vector addition adds all eight first terms to
