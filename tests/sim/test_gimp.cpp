@@ -146,7 +146,8 @@ TEST(GimpWeights, SlopesMadeAgainAreTheStencilsBitForBit) {
         sim::gimp_stencil(x[l], x[l], -1.0, -1.0, k, st, one);
         for (int a = 0; a < 3; ++a) {
           std::uint64_t made, stored;
-          std::memcpy(&made, &d[a][l], sizeof made);
+          const double lane = d[a][l];  // clang takes no address of a vector's lane
+          std::memcpy(&made, &lane, sizeof made);
           std::memcpy(&stored, &one.dx[a], sizeof stored);
           ASSERT_EQ(made, stored) << "ppc " << ppc << ", x = " << x[l] << ", node " << a;
         }
