@@ -11,9 +11,10 @@
 
 namespace sim {
 
-// Eight doubles, and eight matching integers, in vector registers (g++
-// vector extensions): the stencils and stresses of eight points are computed
-// at once. The formulas that take them are templates on the value type,
+// Eight doubles, and eight matching integers, in vector registers (the
+// vector extensions of g++ and clang; without AVX-512 only clang keeps a
+// Lane8 in registers, scripts/pick_compiler.sh): the stencils and stresses
+// of eight points are computed at once. The formulas that take them are templates on the value type,
 // double or Lane8, written with selects (?:) only, so one text gives both and
 // each lane of a Lane8 is bit for bit what the double version gives.
 typedef double Lane8 __attribute__((vector_size(64)));
