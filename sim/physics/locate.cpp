@@ -146,10 +146,10 @@ void compute_stencils(World& w, int first_block, int end_block, int* counts, int
       ++counts[bin[l]];
     }
     // Points off the grid stay out of the window.
-    i_lo = inside & (base_i < i_lo) ? base_i : i_lo;
-    i_hi = inside & (base_i > i_hi) ? base_i : i_hi;
-    j_lo = inside & (base_j < j_lo) ? base_j : j_lo;
-    j_hi = inside & (base_j > j_hi) ? base_j : j_hi;
+    i_lo = (inside & (base_i < i_lo)) ? base_i : i_lo;
+    i_hi = (inside & (base_i > i_hi)) ? base_i : i_hi;
+    j_lo = (inside & (base_j < j_lo)) ? base_j : j_lo;
+    j_hi = (inside & (base_j > j_hi)) ? base_j : j_hi;
   }
   int partial[kWindowInts] = {g.nx, -1, g.ny, -1, bad, off_bins};
   for (int l = 0; l < 8; ++l) {

@@ -16,7 +16,6 @@ using namespace scenario_json;
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-constexpr double kInf = HUGE_VAL;
 
 RestCriterion parse_rest(const Node& node, double duration) {
   require_object(node, {"kinetic_ratio", "min_time"});
