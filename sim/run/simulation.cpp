@@ -25,6 +25,19 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+// A step's terms of the energy balance (Eq. 3) added to its stage's, and the
+// kinetic energies it ended with.
+void add_step_to_stage(const StepReport& report, StageResult& r) {
+  r.gravity_work += report.gravity_work;
+  r.energy.internal_work += report.internal_work;
+  r.energy.damping_loss += report.damping_loss;
+  r.energy.wall_loss += report.wall_loss;
+  r.energy.friction_work += report.friction_work;
+  r.energy.transfer_loss += report.transfer_loss;
+  r.kinetic_energy = report.kinetic_energy;
+  r.moving_kinetic_energy = report.moving_kinetic_energy;
+}
+
 }  // namespace
 
 Simulation::Simulation(const Scenario& scenario)
@@ -225,14 +238,7 @@ void Simulation::run_timed_stage(const StageSpec& stage, Observer& observer) {
     stage_time_ += dt;
     time_ += dt;
     ++r.steps;
-    r.gravity_work += report.gravity_work;
-    r.energy.internal_work += report.internal_work;
-    r.energy.damping_loss += report.damping_loss;
-    r.energy.wall_loss += report.wall_loss;
-    r.energy.friction_work += report.friction_work;
-    r.energy.transfer_loss += report.transfer_loss;
-    r.kinetic_energy = report.kinetic_energy;
-    r.moving_kinetic_energy = report.moving_kinetic_energy;
+    add_step_to_stage(report, r);
     p.max_signal = report.max_signal;
     watch(stage, report);
     observer.progress(*this, stage, r.steps);
