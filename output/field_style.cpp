@@ -11,16 +11,30 @@ namespace app {
 
 namespace {
 
+// A field's name in files and options, and its words on a frame: the title,
+// the colour bar's label and unit (as painted: stresses in kPa).
 struct FieldInfo {
   Field field;
   const char* name;
+  const char* title;
+  const char* label;
+  const char* unit;  // "" for none
 };
 
 constexpr FieldInfo kFields[] = {
-    {Field::DisplacementX, "displacement-x"}, {Field::DisplacementY, "displacement-y"},
-    {Field::RelativeYield, "relative-yield"}, {Field::StressYY, "stress-yy"},
-    {Field::Velocity, "velocity"},            {Field::Material, "material"},
-    {Field::Cohesion, "cohesion"},            {Field::FrictionAngle, "friction-angle"},
+    {Field::DisplacementX, "displacement-x", "horizontal displacement", "horizontal displacement",
+     "m"},
+    {Field::DisplacementY, "displacement-y", "vertical displacement", "vertical displacement",
+     "m"},
+    // At the start of a slide the trigger has just removed the cohesion, so
+    // every soil point sits on the yield surface (1) until the first return.
+    {Field::RelativeYield, "relative-yield", "relative yield",
+     "relative yield (1: at yield, 2: yielded this step)", ""},
+    {Field::StressYY, "stress-yy", "vertical normal stress", "vertical normal stress", "kPa"},
+    {Field::Velocity, "velocity", "speed", "speed |v|", "m/s"},
+    {Field::Material, "material", "material", "material", ""},
+    {Field::Cohesion, "cohesion", "cohesion", "cohesion c", "kPa"},
+    {Field::FrictionAngle, "friction-angle", "friction angle", "friction angle phi", "deg"},
 };
 
 }  // namespace
@@ -51,56 +65,22 @@ std::string field_name(Field f) {
 FieldStyle field_style(Field f, const sim::Scenario& scenario) {
   FieldStyle s;
   s.field = f;
-  switch (f) {
-    case Field::DisplacementX:
-      s.title = "horizontal displacement";
-      s.label = "horizontal displacement";
-      s.unit = "m";
-      break;
-    case Field::DisplacementY:
-      s.title = "vertical displacement";
-      s.label = "vertical displacement";
-      s.unit = "m";
-      break;
-    case Field::RelativeYield:
-      s.title = "relative yield";
-      // At the start of a slide the trigger has just removed the cohesion, so
-      // every soil point sits on the yield surface (1) until the first return.
-      s.label = "relative yield (1: at yield, 2: yielded this step)";
-      s.fixed_range = true;
-      s.lo = 0;
-      s.hi = 2;
-      break;
-    case Field::StressYY:
-      s.title = "vertical normal stress";
-      s.label = "vertical normal stress";
-      s.unit = "kPa";
-      break;
-    case Field::Velocity:
-      s.title = "speed";
-      s.label = "speed |v|";
-      s.unit = "m/s";
-      break;
-    case Field::Cohesion:
-      s.title = "cohesion";
-      s.label = "cohesion c";
-      s.unit = "kPa";
-      break;
-    case Field::FrictionAngle:
-      s.title = "friction angle";
-      s.label = "friction angle phi";
-      s.unit = "deg";
-      break;
-    case Field::Material: {
-      s.title = "material";
-      for (const sim::MaterialSpec& m : scenario.materials) s.names.push_back(m.name);
-      s.label = "material";
-      s.categorical = true;
-      s.fixed_range = true;
-      s.lo = 0;
-      s.hi = std::max<double>(1, double(scenario.materials.size()) - 1);
-      break;
+  for (const FieldInfo& i : kFields)
+    if (i.field == f) {
+      s.title = i.title;
+      s.label = i.label;
+      s.unit = i.unit;
     }
+  if (f == Field::RelativeYield) {
+    s.fixed_range = true;
+    s.lo = 0;
+    s.hi = 2;
+  } else if (f == Field::Material) {
+    for (const sim::MaterialSpec& m : scenario.materials) s.names.push_back(m.name);
+    s.categorical = true;
+    s.fixed_range = true;
+    s.lo = 0;
+    s.hi = std::max<double>(1, double(scenario.materials.size()) - 1);
   }
   // A range the scenario gives (SI units) holds for every frame of the run.
   const auto given = scenario.output.ranges.find(field_name(f));
