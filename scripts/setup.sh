@@ -7,12 +7,19 @@ cd "$(dirname "$0")/.."
 packages=(build-essential cmake ninja-build pkg-config git libeigen3-dev nlohmann-json3-dev
           libcli11-dev libpng-dev zlib1g-dev libosmesa6-dev libfreetype-dev fonts-dejavu-core ffmpeg
           libgtest-dev googletest libopenmpi-dev openmpi-bin)
-# The compiler: CXX (and CC) where set, else the one scripts/pick_compiler.sh
-# picks for this processor (clang where it has no AVX-512; why is there).
+# The compiler: clang, unless CXX (and CC) name another. The step computes
+# eight points at once in 64-byte vectors (Lane8, sim/physics/lanes.hpp).
+# Without AVX-512, g++ 12 keeps such a vector in memory and takes its shuffles
+# and selects apart lane by lane, where clang 14 splits it into two AVX
+# registers: built for AVX2, the 66,787-point slope's step took 496 to 505 ns
+# a point-step with g++ and 90 to 106 with clang. With AVX-512 clang was
+# ahead too: the gallery's paper figures in 132 to 136 s against 140 to 145, the
+# granular column 1.05 to 1.11 times g++'s point-steps a second on one thread.
+# Both give the same bits (issue 17, twenty-eighth pass, bench/README.md).
 if [ -n "${CXX:-}" ]; then
-  read -r cc cxx why <<< "${CC:-cc} $CXX (CXX is set)"
+  cc=${CC:-cc} cxx=$CXX why="(CXX is set)"
 else
-  read -r cc cxx why <<< "$(scripts/pick_compiler.sh)"
+  cc=clang cxx=clang++ why="(the default: a faster step than g++, the same bits; scripts/setup.sh)"
 fi
 # llvm: llvm-ar for clang's link-time optimisation; libomp-dev: clang's OpenMP.
 if [ "$cxx" = clang++ ]; then packages+=(clang llvm libomp-dev); fi

@@ -13,7 +13,7 @@ namespace sim {
 
 // Eight doubles, and eight matching integers, in vector registers (the
 // vector extensions of g++ and clang; without AVX-512 only clang keeps a
-// Lane8 in registers, scripts/pick_compiler.sh): the stencils and stresses
+// Lane8 in registers, scripts/setup.sh): the stencils and stresses
 // of eight points are computed at once. The formulas that take them are templates on the value type,
 // double or Lane8, written with selects (?:) only, so one text gives both and
 // each lane of a Lane8 is bit for bit what the double version gives.
