@@ -13,10 +13,11 @@ namespace sim {
 
 // Eight doubles, and eight matching integers, in vector registers (the
 // vector extensions of g++ and clang; without AVX-512 only clang keeps a
-// Lane8 in registers, scripts/setup.sh): the stencils and stresses
-// of eight points are computed at once. The formulas that take them are templates on the value type,
-// double or Lane8, written with selects (?:) only, so one text gives both and
-// each lane of a Lane8 is bit for bit what the double version gives.
+// Lane8 in registers, scripts/setup.sh): the stencils and stresses of eight
+// points are computed at once. The formulas that take them are templates on
+// the value type, double or Lane8, written with selects (?:) only, so one
+// text gives both and each lane of a Lane8 is bit for bit what the double
+// version gives.
 typedef double Lane8 __attribute__((vector_size(64)));
 // Four doubles: a stencil row's three nodes and a spare lane (gimp.hpp), in
 // one AVX register where the build has AVX, two SSE halves where not. Each
