@@ -116,6 +116,17 @@ inline Lane8 sum3_of_halves(const Lane8& a, const Lane8& b, const Lane8& c, cons
 inline Lane8 load4x2(const double* nodes, int row_a, int row_c) {
   return join4(load4(nodes + row_a), load4(nodes + row_c));
 }
+// Grid row `row` of array `low` in the low half, of `high` in the high half.
+inline Lane8 load4x2_of(const double* low, const double* high, int row) {
+  return join4(load4(low + row), load4(high + row));
+}
+// A held stencil row moved one node along x: its first node is written back
+// to row[0] and the node after its fourth, row[4], comes in as the fourth.
+// The scatters' runs move so far more often than anywhere else (bands.hpp).
+inline Lane4 slide_row(double* row, const Lane4& held) {
+  row[0] = held[0];
+  return __builtin_shufflevector(held, Lane4{} + row[4], 1, 2, 3, 4);
+}
 
 // One particle's 3x3 stencil: nodes (base_i + a, base_j + b), a, b in 0..2.
 // The phases read a stencil row as one vector operation on three
@@ -170,6 +181,18 @@ struct NodeSumsSideBySide {
 
   void hold(int at) {
     if (at == base) return;
+    if (base >= 0 && at == base + 1) {  // the next node of the row: slide_row for both arrays
+      for (int b = 0; b < 3; ++b) {
+        double* lo = low + base + b * stride;
+        double* hi = high + base + b * stride;
+        lo[0] = rows[b][0];
+        hi[0] = rows[b][4];
+        const Lane8 entering = join4(Lane4{} + lo[4], Lane4{} + hi[4]);
+        rows[b] = __builtin_shufflevector(rows[b], entering, 1, 2, 3, 8, 5, 6, 7, 12);
+      }
+      base = at;
+      return;
+    }
     flush();
     base = at;
     for (int b = 0; b < 3; ++b) rows[b] = join4(load4(low + base + b * stride), load4(high + base + b * stride));
