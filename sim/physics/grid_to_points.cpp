@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "sim/physics/bands.hpp"
+#include "sim/physics/point_lanes.hpp"
 #include "sim/physics/step.hpp"
 
 namespace sim {
@@ -82,43 +83,42 @@ __attribute__((always_inline)) inline Lane8 gather_two(const Grid& g, HeldNodes&
   return __builtin_shufflevector(sums, sums, 0, 2, 1, 3, 4, 6, 5, 7);
 }
 
-// The new velocities and positions of points p and q (lanes 0 and 1) from
-// their sums S_ip a_i and S_ip v_i (gather_two), and their terms of the
-// band's sums (t, added point by point in the band's order), computed side
-// by side and added p first; q only where `both` (q is p for a band's odd
-// last point). `fastest` keeps each material's largest |v_p|^2. On one thread the column's G2P went from 9.3 to 8.8 ns per
-// point with the pair's terms in Lane2 (issue 17, eleventh pass); free
-// functions then took 12.1 where lambdas took 8.8. Inlined (always_inline),
-// these take what the lambdas took: 14.4 to 14.5 ns per point on the
-// 66,787-point slope against 14.5 to 15.3 (twenty-sixth pass).
-__attribute__((always_inline)) inline void update_two(const World& w, const PointArrays& a,
-                                                      const StepInput& in, double keep, int p,
-                                                      int q, const Lane8& sums, bool both,
-                                                      PointSums& t, double* fastest) {
-  const Lane2 ax = half2(sums, 0), ay = half2(sums, 1);
-  const Lane2 vx = half2(sums, 2), vy = half2(sums, 3);
-  const Lane2 dx = in.dt * vx, dy = in.dt * vy;         // Eq. (29)
-  const Lane2 ux = fused(ax, in.dt, Lane2{a.vx[p], a.vx[q]});  // Eq. (30)
-  const Lane2 uy = fused(ay, in.dt, Lane2{a.vy[p], a.vy[q]});
-  const Lane2 kx = ux * keep, ky = uy * keep;  // damping of the gravity stage
-  const Lane2 m{a.mass[p], a.mass[q]};
-  const Lane2 v2 = kx * kx + ky * ky;
-  const Lane2 gravity_terms = m * (in.gravity[0] * dx + in.gravity[1] * dy);
-  const Lane2 kinetic_terms = 0.5 * m * v2, moving_terms = 0.5 * m * (vx * vx + vy * vy);
-  const Lane2 damped_terms = 0.5 * m * (ux * ux + uy * uy - v2);
-  for (int l = 0; l < (both ? 2 : 1); ++l) {
-    const int r = l == 0 ? p : q;
-    a.x[r] += dx[l];
-    a.y[r] += dy[l];
-    a.vx[r] = kx[l];
-    a.vy[r] = ky[l];
+// The new velocities and positions of eight points q[0..count) of a band
+// (point_lanes.hpp), one a lane, from their sums S_ip a_i and S_ip v_i
+// (`sums`: ax, ay, vx, vy), and their terms of the band's sums `t`, added
+// point by point in the band's order. `fastest` keeps each material's
+// largest |v_p|^2. Eight at a time rather than two (until issue 17's
+// twenty-ninth pass), a group stored in a run is read and written as
+// vectors: G2P took 11.6 ns a point on the 66,787-point slope, 11.1 in eight
+// lanes (one thread, the least of 14 runs in turns).
+__attribute__((always_inline)) inline void update_eight(const World& w, const PointArrays& a,
+                                                        const StepInput& in, double keep,
+                                                        const int q[8], int count,
+                                                        const Lane8 sums[4], PointSums& t,
+                                                        double* fastest) {
+  const bool run = stored_in_a_run(q, count);
+  const Lane8 &ax = sums[0], &ay = sums[1], &vx = sums[2], &vy = sums[3];
+  const Lane8 dx = in.dt * vx, dy = in.dt * vy;                      // Eq. (29)
+  const Lane8 ux = fused(ax, in.dt, lanes_at<Lane8>(a.vx, q, run));  // Eq. (30)
+  const Lane8 uy = fused(ay, in.dt, lanes_at<Lane8>(a.vy, q, run));
+  const Lane8 kx = ux * keep, ky = uy * keep;  // damping of the gravity stage
+  const Lane8 m = lanes_at<Lane8>(a.mass, q, run);
+  const Lane8 v2 = kx * kx + ky * ky;
+  const Lane8 gravity_terms = m * (in.gravity[0] * dx + in.gravity[1] * dy);
+  const Lane8 kinetic_terms = 0.5 * m * v2, moving_terms = 0.5 * m * (vx * vx + vy * vy);
+  const Lane8 damped_terms = 0.5 * m * (ux * ux + uy * uy - v2);
+  store_lanes(a.x, q, count, run, lanes_at<Lane8>(a.x, q, run) + dx);
+  store_lanes(a.y, q, count, run, lanes_at<Lane8>(a.y, q, run) + dy);
+  store_lanes(a.vx, q, count, run, kx);
+  store_lanes(a.vy, q, count, run, ky);
+  for (int l = 0; l < count; ++l) {
     t.gravity_work += gravity_terms[l];
     t.kinetic += kinetic_terms[l];
     t.moving += moving_terms[l];
     t.damped += damped_terms[l];
-    fastest[a.material[r]] = std::max(fastest[a.material[r]], v2[l]);
+    fastest[a.material[q[l]]] = std::max(fastest[a.material[q[l]]], v2[l]);
     // Zero, and not added, for a point whose stencil no wall acts on.
-    const StencilWeights& st = w.weights[r];
+    const StencilWeights& st = w.weights[q[l]];
     if (w.grid.reaches_walls(st.base_i, st.base_j))
       t.walled += 0.5 * m[l] * in.dt * in.dt * walled_squared(w.grid, st);
   }
@@ -126,8 +126,7 @@ __attribute__((always_inline)) inline void update_two(const World& w, const Poin
 
 }  // namespace
 
-// The points of each band two by two, each pair updated in its order; where
-// a band has an odd count, its last point in both halves, updated once.
+// The points of each band eight by eight, in the band's order.
 void grid_to_points(World& w, const StepInput& in) {
   const double keep = 1.0 / (1.0 + in.damping);  // v := v / (1 + theta)
   Particles& pts = w.points;
@@ -144,16 +143,15 @@ void grid_to_points(World& w, const StepInput& in) {
     std::fill(fastest, fastest + kinds, -1.0);
     const int end = w.band_start[band + 1];
     HeldNodes held;
-    int s = w.band_start[band];
-    for (; s + 1 < end; s += 2) {
-      const int p = w.order[s], q = w.order[s + 1];
-      const Lane8 sums = gather_two(w.grid, held, w.weights[p], w.weights[q]);
-      update_two(w, a, in, keep, p, q, sums, true, t, fastest);
-    }
-    if (s < end) {
-      const int p = w.order[s];
-      const Lane8 sums = gather_two(w.grid, held, w.weights[p], w.weights[p]);
-      update_two(w, a, in, keep, p, p, sums, false, t, fastest);
+    for (int s = w.band_start[band]; s < end; s += 8) {
+      const int count = std::min(8, end - s);
+      int q[8];
+      for (int l = 0; l < 8; ++l) q[l] = w.order[s + std::min(l, count - 1)];
+      Lane8 pairs[4], sums[4];
+      for (int k = 0; k < 4; ++k)
+        pairs[k] = gather_two(w.grid, held, w.weights[q[2 * k]], w.weights[q[2 * k + 1]]);
+      pairs_to_lanes(pairs, sums);  // {ax, ay, vx, vy}
+      update_eight(w, a, in, keep, q, count, sums, t, fastest);
     }
     for (int k = 0; k < kinds; ++k)
       if (fastest[k] >= 0)

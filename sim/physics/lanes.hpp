@@ -22,16 +22,15 @@ typedef double Lane8 __attribute__((vector_size(64)));
 // Four doubles: a stencil row's three nodes and a spare lane (gimp.hpp), in
 // one AVX register where the build has AVX, two SSE halves where not. Each
 // lane is computed with plain IEEE arithmetic, so the results do not depend
-// on the vector width. Two: a pair of points' values side by side.
+// on the vector width.
 typedef double Lane4 __attribute__((vector_size(32)));
-typedef double Lane2 __attribute__((vector_size(16)));
 typedef std::int64_t Int8 __attribute__((vector_size(64)));
 // Eight bytes, one per point or node (materials, yield flags, wall holds),
 // widened to an Int8 with __builtin_convertvector.
 typedef std::uint8_t Bytes8 __attribute__((vector_size(8)));
 
-// Two points' stencil rows side by side: the gathers of G2P and of the
-// velocity gradient take two points at once in the halves of a Lane8, one
+// Two stencil rows side by side: the velocity gradient's gather takes two
+// points at once in the halves of a Lane8, G2P's two nodal arrays, one
 // vector operation where two Lane4 took two (issue 17, tenth pass: on one
 // thread the column's G2P went from 12.4 to 9.6 ns per point, its stress
 // phase from 26.6 to 24.9, bench/README.md). Lane by lane the operations are
@@ -39,8 +38,6 @@ typedef std::uint8_t Bytes8 __attribute__((vector_size(8)));
 inline Lane8 join4(const Lane4& a, const Lane4& b) {
   return __builtin_shufflevector(a, b, 0, 1, 2, 3, 4, 5, 6, 7);
 }
-// Lanes 2k and 2k + 1 of v.
-inline Lane2 half2(const Lane8& v, int k) { return Lane2{v[2 * k], v[2 * k + 1]}; }
 inline Lane4 low4(const Lane8& v) { return __builtin_shufflevector(v, v, 0, 1, 2, 3); }
 inline Lane4 high4(const Lane8& v) { return __builtin_shufflevector(v, v, 4, 5, 6, 7); }
 
@@ -63,16 +60,10 @@ inline V fused_by_lane(const V& a, const V& b, const V& c) {
 }
 inline double fused(double a, double b, double c) { return __builtin_fma(a, b, c); }
 #if defined(__FMA__)
-inline Lane2 fused(const Lane2& a, const Lane2& b, const Lane2& c) {
-  return _mm_fmadd_pd(a, b, c);
-}
 inline Lane4 fused(const Lane4& a, const Lane4& b, const Lane4& c) {
   return _mm256_fmadd_pd(a, b, c);
 }
 #else
-inline Lane2 fused(const Lane2& a, const Lane2& b, const Lane2& c) {
-  return fused_by_lane(a, b, c);
-}
 inline Lane4 fused(const Lane4& a, const Lane4& b, const Lane4& c) {
   return fused_by_lane(a, b, c);
 }

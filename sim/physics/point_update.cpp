@@ -10,6 +10,7 @@
 #include "sim/physics/exp_lanes.hpp"
 #include "sim/physics/granular.hpp"
 #include "sim/physics/mohr_coulomb_return.hpp"
+#include "sim/physics/point_lanes.hpp"
 #include "sim/physics/slope_lanes.hpp"
 #include "sim/physics/step.hpp"
 
@@ -24,38 +25,6 @@ struct MaterialLanes {
   Int8 plastic;  // all bits set where the point's material is Mohr-Coulomb
   MohrCoulombLanes mohr_coulomb;
 };
-
-// Whether eight points are stored one after another, as most groups of a
-// band are while the points are stored in cell order (point_order.hpp): their
-// arrays are then read and written as vectors instead of lane by lane.
-bool stored_in_a_run(const int q[8], int count) {
-  if (count < 8) return false;
-  for (int l = 1; l < 8; ++l)
-    if (q[l] != q[0] + l) return false;
-  return true;
-}
-// The values of eight points in array `a`, one a lane (V: Lane8 of doubles,
-// Bytes8 of bytes), and their store back, count lanes.
-template <class V, class T>
-V lanes_at(const T* a, const int q[8], bool run) {
-  static_assert(sizeof(V) == 8 * sizeof(T), "eight lanes of T");
-  V v;
-  if (run) {
-    std::memcpy(&v, a + q[0], sizeof v);
-    return v;
-  }
-  for (int l = 0; l < 8; ++l) v[l] = a[q[l]];
-  return v;
-}
-template <class T, class V>
-void store_lanes(T* a, const int q[8], int count, bool run, const V& v) {
-  static_assert(sizeof(V) == 8 * sizeof(T), "eight lanes of T");
-  if (run) {
-    std::memcpy(a + q[0], &v, sizeof v);
-    return;
-  }
-  for (int l = 0; l < count; ++l) a[q[l]] = v[l];
-}
 
 // The materials' constants are remade only when the group of eight points q
 // has other materials than the group before: a scene of one soil makes them
@@ -121,19 +90,6 @@ Lane8 velocity_gradients(const World& w, int p, int q, const SlopeLanes& d) {
   return sum3_of_halves(lxx, lxy, lyx, lyy);
 }
 
-// The four components of eight points' velocity gradients, one point a lane,
-// from velocity_gradients of points (0, 1), (2, 3), (4, 5), (6, 7).
-void gradient_lanes(const Lane8 pairs[4], Lane8 L[4]) {
-  const Lane8 xx_xy01 = __builtin_shufflevector(pairs[0], pairs[1], 0, 1, 8, 9, 2, 3, 10, 11);
-  const Lane8 xx_xy23 = __builtin_shufflevector(pairs[2], pairs[3], 0, 1, 8, 9, 2, 3, 10, 11);
-  const Lane8 yx_yy01 = __builtin_shufflevector(pairs[0], pairs[1], 4, 5, 12, 13, 6, 7, 14, 15);
-  const Lane8 yx_yy23 = __builtin_shufflevector(pairs[2], pairs[3], 4, 5, 12, 13, 6, 7, 14, 15);
-  L[0] = __builtin_shufflevector(xx_xy01, xx_xy23, 0, 1, 2, 3, 8, 9, 10, 11);
-  L[1] = __builtin_shufflevector(xx_xy01, xx_xy23, 4, 5, 6, 7, 12, 13, 14, 15);
-  L[2] = __builtin_shufflevector(yx_yy01, yx_yy23, 0, 1, 2, 3, 8, 9, 10, 11);
-  L[3] = __builtin_shufflevector(yx_yy01, yx_yy23, 4, 5, 6, 7, 12, 13, 14, 15);
-}
-
 // What the force scatter needs of eight points just updated, one lane each,
 // handed over in registers: their new stress, their volume after Eq. (25)
 // and their mass, so the scatter reloads nothing and divides nothing.
@@ -165,7 +121,7 @@ void update_eight_stresses(World& w, const int* p, int count, double dt, const S
   pairs[1] = velocity_gradients<1>(w, q[2], q[3], out.slopes);
   pairs[2] = velocity_gradients<2>(w, q[4], q[5], out.slopes);
   pairs[3] = velocity_gradients<3>(w, q[6], q[7], out.slopes);
-  gradient_lanes(pairs, L);
+  pairs_to_lanes(pairs, L);  // {xx, xy, yx, yy}
   const Bytes8 flags = lanes_at<Bytes8>(pts.yielded.data(), q, run);
   const Int8 was_yielded = __builtin_convertvector(flags, Int8);
   const MaterialLanes& m = cache.get(w, lanes_at<Bytes8>(pts.material.data(), q, run), q, run, own);
