@@ -7,6 +7,7 @@
 #include <functional>
 #include <sstream>
 
+#include "app/cli_options.hpp"
 #include "app/commands.hpp"
 #include "app/new_command.hpp"
 #include "app/gallery_monte_carlo.hpp"
@@ -34,8 +35,7 @@ CLI::App* add_run_command(CLI::App& cli, app::RunOptions& run) {
   CLI::App* run_cmd = cli.add_subcommand("run", "Run a scenario and write its outputs");
   run_cmd->add_option("scenario", run.scenario, "Scenario JSON file")->required();
   run_cmd->add_option("--out", run.out_dir, "Output directory")->required();
-  run_cmd->add_option("--threads", run.threads, "OpenMP threads (default: all cores)")
-      ->check(CLI::Range(1, 1024));
+  app::add_threads_option(*run_cmd, run.threads, "OpenMP threads (default: all cores)");
   run_cmd->add_option_function<double>(
       "--checkpoint-every", positive_seconds(run.checkpoint_every),
       "Write OUT/checkpoint.lsck every this many seconds of simulated time (Ctrl-C and "
@@ -55,8 +55,7 @@ CLI::App* add_resume_command(CLI::App& cli, app::ResumeOptions& resume) {
   CLI::App* resume_cmd = cli.add_subcommand(
       "resume", "Continue a stopped run from DIR/checkpoint.lsck, as if it had never stopped");
   resume_cmd->add_option("dir", resume.dir, "The stopped run's output directory")->required();
-  resume_cmd->add_option("--threads", resume.threads, "OpenMP threads (default: all cores)")
-      ->check(CLI::Range(1, 1024));
+  app::add_threads_option(*resume_cmd, resume.threads, "OpenMP threads (default: all cores)");
   resume_cmd->add_option_function<double>(
       "--checkpoint-every", positive_seconds(resume.checkpoint_every),
       "Go on writing checkpoints every this many simulated seconds");
@@ -70,8 +69,7 @@ CLI::App* add_check_command(CLI::App& cli, app::RunOptions& check) {
       "check", "Everything `run` checks before simulating, and the run's estimate; write nothing");
   check_cmd->add_option("scenario", check.scenario, "Scenario JSON file")->required();
   check_cmd->add_option("--out", check.out_dir, "Check this output directory too");
-  check_cmd->add_option("--threads", check.threads, "Threads the estimate is for")
-      ->check(CLI::Range(1, 1024));
+  app::add_threads_option(*check_cmd, check.threads, "Threads the estimate is for");
   check_cmd->add_option("--state-cache", check.state_cache, "Check this state cache folder too");
   check_cmd->add_flag("--overwrite", check.overwrite,
                       "Accept an --out that holds an earlier run's outputs (run would remove them)");

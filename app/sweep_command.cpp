@@ -5,6 +5,7 @@
 #include <iostream>
 #include <sstream>
 
+#include "app/cli_options.hpp"
 #include "app/commands.hpp"
 #include "app/preflight.hpp"
 
@@ -92,8 +93,7 @@ CLI::App* add_sweep_command(CLI::App& cli, sweep::SweepOptions& o) {
   cmd->add_option_function<std::string>(
       "--paint", [&o](const std::string& text) { o.paint = parse_members(text); },
       "Members that paint the base scene's frames and VTK states, e.g. 0,3 (default: none)");
-  cmd->add_option("--threads", o.threads, "OpenMP threads of each member (default: all cores)")
-      ->check(CLI::Range(1, 1024));
+  add_threads_option(*cmd, o.threads, "OpenMP threads of each member (default: all cores)");
   cmd->add_flag("--allow-long", o.allow_long,
                 "Run members whose estimate passes the limits (time, steps, memory, disk)");
   cmd->add_flag("--check", o.check_only,
