@@ -125,7 +125,7 @@ inline Lane8 load4x2_of(const double* low, const double* high, int row) {
 // The scatters' runs move so far more often than anywhere else (bands.hpp).
 inline Lane4 slide_row(double* row, const Lane4& held) {
   row[0] = held[0];
-  return __builtin_shufflevector(held, Lane4{} + row[4], 1, 2, 3, 4);
+  return __builtin_shufflevector(held, splat4(row[4]), 1, 2, 3, 4);
 }
 
 // One particle's 3x3 stencil: nodes (base_i + a, base_j + b), a, b in 0..2.
@@ -187,7 +187,7 @@ struct NodeSumsSideBySide {
         double* hi = high + base + b * stride;
         lo[0] = rows[b][0];
         hi[0] = rows[b][4];
-        const Lane8 entering = join4(Lane4{} + lo[4], Lane4{} + hi[4]);
+        const Lane8 entering = join4(splat4(lo[4]), splat4(hi[4]));
         rows[b] = __builtin_shufflevector(rows[b], entering, 1, 2, 3, 8, 5, 6, 7, 12);
       }
       base = at;

@@ -38,6 +38,9 @@ typedef std::uint8_t Bytes8 __attribute__((vector_size(8)));
 inline Lane8 join4(const Lane4& a, const Lane4& b) {
   return __builtin_shufflevector(a, b, 0, 1, 2, 3, 4, 5, 6, 7);
 }
+// x in every lane, a broadcast: Lane4{} + x is an addition the compiler
+// must keep (0 + -0 is +0), one per use where the step took it so.
+inline Lane4 splat4(double x) { return Lane4{x, x, x, x}; }
 inline Lane4 low4(const Lane8& v) { return __builtin_shufflevector(v, v, 0, 1, 2, 3); }
 inline Lane4 high4(const Lane8& v) { return __builtin_shufflevector(v, v, 4, 5, 6, 7); }
 

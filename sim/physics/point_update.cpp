@@ -78,7 +78,7 @@ Lane8 velocity_gradients(const World& w, int p, int q, const SlopeLanes& d) {
   Lane8 lxx{}, lxy{}, lyx{}, lyy{};
   for (int b = 0; b < 3; ++b) {
     const int ra = g.node(a.base_i, a.base_j + b), rc = g.node(c.base_i, c.base_j + b);
-    const Lane8 gx = x_slopes * join4(Lane4{} + a.wy[b], Lane4{} + c.wy[b]);
+    const Lane8 gx = x_slopes * join4(splat4(a.wy[b]), splat4(c.wy[b]));
     const Lane8 gy = x_weights_ac * pair_halves<k>(d.dy[b]);
     const Lane8 vx = load4x2(g.vx.data(), ra, rc);
     const Lane8 vy = load4x2(g.vy.data(), ra, rc);
