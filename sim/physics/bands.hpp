@@ -321,8 +321,8 @@ void scatter_own_bands(World& w, BandMark which, BandMark ready, Visit visit) {
 // instead of being written back and read again. Read again, each row
 // overlapped the one just written by three nodes, a load the processor
 // cannot serve from its pending stores, so it waited for them to reach the
-// cache: P2G took 5.8 ns a point on the 66,787-point slope, 4.7 with the
-// slide (issue 17, twenty-ninth pass).
+// cache: P2G took 5.8 ns a point on the 66,787-point slope, 4.8 with the
+// slide (one thread, issue 17, twenty-ninth pass).
 template <int N, class Add>
 void scatter_band_in_runs(World& w, int band, double* const (&arrays)[N], Add add) {
   const Grid& g = w.grid;

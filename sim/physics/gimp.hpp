@@ -181,7 +181,7 @@ struct NodeSumsSideBySide {
 
   void hold(int at) {
     if (at == base) return;
-    if (base >= 0 && at == base + 1) {  // the next node of the row: slide_row for both arrays
+    if (base >= 0 && at == base + 1) {  // the next node of the row: both arrays' rows slide
       for (int b = 0; b < 3; ++b) {
         double* lo = low + base + b * stride;
         double* hi = high + base + b * stride;
