@@ -37,6 +37,13 @@ constexpr FieldInfo kFields[] = {
     {Field::FrictionAngle, "friction-angle", "friction angle", "friction angle phi", "deg"},
 };
 
+// The table's row of field f; null for none.
+const FieldInfo* info_of(Field f) {
+  for (const FieldInfo& i : kFields)
+    if (i.field == f) return &i;
+  return nullptr;
+}
+
 }  // namespace
 
 const std::vector<std::string>& field_names() {
@@ -57,20 +64,18 @@ Field parse_field(const std::string& name) {
 }
 
 std::string field_name(Field f) {
-  for (const FieldInfo& i : kFields)
-    if (i.field == f) return i.name;
-  return "?";
+  const FieldInfo* i = info_of(f);
+  return i ? i->name : "?";
 }
 
 FieldStyle field_style(Field f, const sim::Scenario& scenario) {
   FieldStyle s;
   s.field = f;
-  for (const FieldInfo& i : kFields)
-    if (i.field == f) {
-      s.title = i.title;
-      s.label = i.label;
-      s.unit = i.unit;
-    }
+  if (const FieldInfo* i = info_of(f)) {
+    s.title = i->title;
+    s.label = i->label;
+    s.unit = i->unit;
+  }
   if (f == Field::RelativeYield) {
     s.fixed_range = true;
     s.lo = 0;
