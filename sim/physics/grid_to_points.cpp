@@ -146,7 +146,7 @@ void grid_to_points(World& w, const StepInput& in) {
     for (int s = w.band_start[band]; s < end; s += 8) {
       const int count = std::min(8, end - s);
       int q[8];
-      for (int l = 0; l < 8; ++l) q[l] = w.order[s + std::min(l, count - 1)];
+      group_of_eight(&w.order[s], count, q);
       Lane8 pairs[4], sums[4];
       for (int k = 0; k < 4; ++k)
         pairs[k] = gather_two(w.grid, held, w.weights[q[2 * k]], w.weights[q[2 * k + 1]]);

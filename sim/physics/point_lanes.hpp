@@ -5,11 +5,18 @@
 // point and are never written.
 #pragma once
 
+#include <algorithm>
 #include <cstring>
 
 #include "sim/physics/lanes.hpp"
 
 namespace sim {
+
+// The eight slots of a group of count <= 8 points of `order` (a band's, in
+// its order), the last repeated into the lanes past count.
+inline void group_of_eight(const int* order, int count, int q[8]) {
+  for (int l = 0; l < 8; ++l) q[l] = order[std::min(l, count - 1)];
+}
 
 // Whether eight points are stored one after another, as most groups of a
 // band are while the points are stored in cell order (point_order.hpp): their

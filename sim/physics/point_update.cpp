@@ -113,7 +113,7 @@ void update_eight_stresses(World& w, const int* p, int count, double dt, const S
   Particles& pts = w.points;
   int q[8];
   Lane8 pairs[4], L[4];
-  for (int l = 0; l < 8; ++l) q[l] = p[std::min(l, count - 1)];
+  group_of_eight(p, count, q);
   const bool run = stored_in_a_run(q, count);
   out.slopes = slope_lanes(lanes_at<Lane8>(pts.x.data(), q, run),
                            lanes_at<Lane8>(pts.y.data(), q, run), w.grid, w.gimp);
