@@ -22,6 +22,10 @@
 // cell order of a copy of the world, each after one more step, whether due
 // or not: the sort alone, one figure per sort (the first ones size the
 // sort's scratch arrays), after the hash, which they do not touch.
+// --slide-at T (with --scene) runs the scene's stages first, as `landslide
+// run` does, and times its steps from T s into its first dynamic stage: the
+// slide's spread-out window and yielding soil, where the gallery's runs
+// spend most of their steps, rather than the seeded state.
 // --whole-step then times sim::step itself, as the time loop calls it (no
 // barrier between phases: a band waits only for its neighbours' marks),
 // on 1 thread and on N (--threads, at least 2) in turns, three rounds, each
@@ -30,7 +34,7 @@
 // into the next step's) and where the bands were split. Where one thread
 // works longer than the other, the difference is mostly the other's wait.
 //   build/bench/phases [REFINE] [STEPS] [--own-strength] [--scene-order] [--mixed] [--threads N]
-//                      [--scene NAME] [--sorts N] [--whole-step]
+//                      [--scene NAME [--slide-at T]] [--sorts N] [--whole-step]
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
@@ -49,6 +53,7 @@
 #include "sim/physics/point_strength.hpp"
 #include "sim/physics/step.hpp"
 #include "sim/physics/team.hpp"
+#include "sim/run/simulation.hpp"
 #include "sim/scene/seed.hpp"
 
 namespace {
@@ -97,11 +102,40 @@ void time_whole_steps(const sim::World& w, const sim::StepInput& in, int steps, 
   std::printf("\n");
 }
 
+// The scene's world `seconds` into its first dynamic stage, and the time step
+// the time loop would take next: its stages run as `landslide run` runs them.
+struct StopHere {};
+class StopInSlide : public sim::Observer {
+ public:
+  explicit StopInSlide(double seconds) : seconds_(seconds) {}
+  void progress(const sim::Simulation& run, const sim::StageSpec& stage, long) override {
+    if (stage.type == sim::StageType::Dynamic && run.stage_time() >= seconds_) throw StopHere{};
+  }
+
+ private:
+  double seconds_;
+};
+sim::World world_in_slide(const sim::Scenario& s, double seconds, sim::StepInput& in) {
+  sim::Simulation run(s);
+  StopInSlide stop(seconds);
+  try {
+    run.run(stop);
+  } catch (const StopHere&) {
+    in.dt = run.next_time_step();
+    in.gravity = s.gravity;
+    std::printf("from t = %.3f s of the slide, dt = %.3g s\n", run.stage_time(), in.dt);
+    return run.world();
+  }
+  std::fprintf(stderr, "phases: the scene ended before %g s into a dynamic stage\n", seconds);
+  std::exit(2);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   bool own = false, sort = true, mixed = false, whole = false;
   int threads = 1, sorts = 0;
+  double slide_at = -1;
   std::string scene;
   for (; argc > 1; --argc) {
     const std::string last = argv[argc - 1];
@@ -110,6 +144,9 @@ int main(int argc, char** argv) {
       --argc;
     } else if (argc > 2 && std::string(argv[argc - 2]) == "--sorts") {
       sorts = std::atoi(last.c_str());
+      --argc;
+    } else if (argc > 2 && std::string(argv[argc - 2]) == "--slide-at") {
+      slide_at = std::atof(last.c_str());
       --argc;
     } else if (argc > 2 && std::string(argv[argc - 2]) == "--scene") {
       scene = last;
@@ -122,10 +159,10 @@ int main(int argc, char** argv) {
   }
   const int refine = argc > 1 ? std::atoi(argv[1]) : 1, steps = argc > 2 ? std::atoi(argv[2]) : 200;
   if (refine < 1 || steps < 1 || argc > 3 || threads < 1 || sorts < 0 ||
-      (!scene.empty() && refine != 1)) {
+      (!scene.empty() && refine != 1) || (slide_at >= 0 && (scene.empty() || own || mixed))) {
     std::fprintf(stderr, "usage: phases [REFINE >= 1] [STEPS >= 1] [--own-strength] "
                          "[--scene-order] [--mixed] [--threads N >= 1] [--scene NAME, REFINE 1] "
-                         "[--sorts N >= 0] [--whole-step]\n");
+                         "[--slide-at T >= 0, with --scene] [--sorts N >= 0] [--whole-step]\n");
     return 2;
   }
   // Everything outside the timed phases' own region (the warm-up steps, the
@@ -133,7 +170,8 @@ int main(int argc, char** argv) {
   // as many threads as the phases, or "--threads 1" sorted on two.
   omp_set_num_threads(threads);
   const sim::Scenario s = scene.empty() ? bench::granular_column(refine) : bench::load_scene(scene);
-  sim::World w = sim::make_world(s);
+  sim::StepInput in;
+  sim::World w = slide_at >= 0 ? world_in_slide(s, slide_at, in) : sim::make_world(s);
   if (own) {
     std::vector<double> angles(w.points.size());
     for (std::size_t p = 0; p < angles.size(); ++p) angles[p] = (28.0 + (p * 7 % 41) * 0.1) * M_PI / 180;
@@ -147,9 +185,10 @@ int main(int argc, char** argv) {
     sim::sort_points_by_cell(w);
     w.scene_index.clear();
   }
-  sim::StepInput in;
-  in.dt = s.time_step.courant * s.cell_size / sim::max_signal_speed(w);  // at rest: the fastest P wave
-  in.gravity = s.gravity;
+  if (slide_at < 0) {
+    in.dt = s.time_step.courant * s.cell_size / sim::max_signal_speed(w);  // at rest: the fastest P wave
+    in.gravity = s.gravity;
+  }
   sim::StepReport report;
   for (int k = 0; k < 30; ++k) sim::step(w, in, report);  // past the first, elastic steps
 
