@@ -160,27 +160,48 @@ V hold_momentum(Grid& g, int k) {
   return 0.5 * (px * ax + py * ay);
 }
 
+// Whether a wall holds a component at any of the nodes.
+inline bool any_held(bool hx, bool hy) { return hx || hy; }
+inline bool any_held(const Int8& hx, const Int8& hy) {
+  const Int8 either = hx | hy;
+  for (int l = 0; l < 8; ++l)
+    if (either[l]) return true;
+  return false;
+}
+
 // Eq. (28): p_i^{k+1} = p_i^k + dt f_i, with the force normal to a wall
 // taken away. The nodal acceleration handed to the points (Eq. 30) is the
 // whole velocity change of the step: force plus what the wall took away.
+//
+// G2P reads a_i and v_i^{k+1}, and held_a_i near the walls. The updated
+// f_i and p_i are read only by friction walls and APIC's kinetic sums
+// (`all`); without them they are not stored. held_a_i is a_i at a held
+// component and 0 elsewhere, and the grid's arrays start at 0
+// (node_array.hpp), so without friction walls (which write it at nodes no
+// wall holds) it is stored only where a wall holds a component. Six of ten
+// stores a node fewer, the same values read.
 template <class V, class M>
-void update_momentum(Grid& g, int k, double dt, double inv_dt) {
+void update_momentum(Grid& g, int k, double dt, double inv_dt, bool all) {
   const M hx = held<M>(g.fix_x, k), hy = held<M>(g.fix_y, k);
   const V inv = inverse_mass(at<V>(g.mass, k));
   const V fx = hx ? V{} : at<V>(g.fx, k), fy = hy ? V{} : at<V>(g.fy, k);
   const V px = fused(fx, dt, at<V>(g.px, k)), py = fused(fy, dt, at<V>(g.py, k));
   const V ax = fused(fx, inv, at<V>(g.ax, k) * inv_dt);
   const V ay = fused(fy, inv, at<V>(g.ay, k) * inv_dt);
-  put(g.fx, k, fx);
-  put(g.fy, k, fy);
-  put(g.px, k, px);
-  put(g.py, k, py);
   put(g.ax, k, ax);
   put(g.ay, k, ay);
-  put(g.held_ax, k, hx ? ax : V{});
-  put(g.held_ay, k, hy ? ay : V{});
   put(g.vx, k, px * inv);
   put(g.vy, k, py * inv);
+  if (all) {
+    put(g.fx, k, fx);
+    put(g.fy, k, fy);
+    put(g.px, k, px);
+    put(g.py, k, py);
+  }
+  if (all || any_held(hx, hy)) {
+    put(g.held_ax, k, hx ? ax : V{});
+    put(g.held_ay, k, hy ? ay : V{});
+  }
 }
 
 }  // namespace
@@ -218,12 +239,13 @@ void update_nodal_momentum(World& w, double dt) {
   WorkClock clock(w);
   Grid& g = w.grid;
   const double inv_dt = 1.0 / dt;
+  const bool all = !g.friction_walls.empty() || w.transfer == TransferScheme::Apic;
   int first, last;
   own_rows(w, first, last);
   for (int j = first; j < last; ++j)
     along_row(
-        g, j, [&](int k) { update_momentum<Lane8, Int8>(g, k, dt, inv_dt); },
-        [&](int k) { update_momentum<double, bool>(g, k, dt, inv_dt); });
+        g, j, [&](int k) { update_momentum<Lane8, Int8>(g, k, dt, inv_dt, all); },
+        [&](int k) { update_momentum<double, bool>(g, k, dt, inv_dt, all); });
   if (!g.friction_walls.empty()) friction_walls_on_update(g, first, last, dt);
   if (w.transfer == TransferScheme::Apic) grid_kinetic_by_row(g, first, last, kRowGridKineticUpdated);
   clock.finish();
