@@ -137,29 +137,6 @@ V inverse_mass(const V& m) {
   return m > 0.0 ? 1.0 / m : V{};
 }
 
-// Walls hold nodal momentum components at zero (paper Section 6). Nodal
-// velocity v_i = p_i / m_i is what the strain increment of Eq. (31) reads.
-// The velocity a wall takes away is kept (in ax, ay) and handed to the points
-// with the step's acceleration: with the incremental update of Eq. (30) a
-// point would otherwise keep the speed a no-slip wall stopped, and a deposit
-// against a wall would never come to rest. Returns p_i . dv_i / 2 at each
-// node: the kinetic energy m_i |dv_i|^2 / 2 the holds take, negated.
-template <class V, class M>
-V hold_momentum(Grid& g, int k) {
-  const M hx = held<M>(g.fix_x, k), hy = held<M>(g.fix_y, k);
-  const V inv = inverse_mass(at<V>(g.mass, k));
-  const V px = at<V>(g.px, k), py = at<V>(g.py, k);
-  const V ax = hx ? -px * inv : V{}, ay = hy ? -py * inv : V{};
-  const V kept_x = hx ? V{} : px, kept_y = hy ? V{} : py;
-  put(g.ax, k, ax);
-  put(g.ay, k, ay);
-  put(g.px, k, kept_x);
-  put(g.py, k, kept_y);
-  put(g.vx, k, kept_x * inv);
-  put(g.vy, k, kept_y * inv);
-  return 0.5 * (px * ax + py * ay);
-}
-
 // Whether a wall holds a component at any of the nodes.
 inline bool any_held(bool hx, bool hy) { return hx || hy; }
 inline bool any_held(const Int8& hx, const Int8& hy) {
@@ -167,6 +144,41 @@ inline bool any_held(const Int8& hx, const Int8& hy) {
   for (int l = 0; l < 8; ++l)
     if (either[l]) return true;
   return false;
+}
+
+// Where the nodal phases read a component back: at a held one, or
+// everywhere where friction walls or APIC (`all`) may have set it.
+inline bool held_or_all(bool h, bool all) { return h || all; }
+inline Int8 held_or_all(const Int8& h, bool all) { return all ? Int8{} - 1 : h; }
+
+// Walls hold nodal momentum components at zero (paper Section 6). Nodal
+// velocity v_i = p_i / m_i is what the strain increment of Eq. (31) reads.
+// The velocity a wall takes away is kept (in ax, ay) and handed to the points
+// with the step's acceleration: with the incremental update of Eq. (30) a
+// point would otherwise keep the speed a no-slip wall stopped, and a deposit
+// against a wall would never come to rest. Returns p_i . dv_i / 2 at each
+// node: the kinetic energy m_i |dv_i|^2 / 2 the holds take, negated.
+//
+// A component no wall holds keeps its p_i and takes no a_i: without
+// friction walls and APIC, which read and change them here (`all`), they
+// are stored only where a wall holds a component of a node, and the nodal
+// update reads a_i only where one is held (update_momentum).
+template <class V, class M>
+V hold_momentum(Grid& g, int k, bool all) {
+  const M hx = held<M>(g.fix_x, k), hy = held<M>(g.fix_y, k);
+  const V inv = inverse_mass(at<V>(g.mass, k));
+  const V px = at<V>(g.px, k), py = at<V>(g.py, k);
+  const V ax = hx ? -px * inv : V{}, ay = hy ? -py * inv : V{};
+  const V kept_x = hx ? V{} : px, kept_y = hy ? V{} : py;
+  if (all || any_held(hx, hy)) {
+    put(g.ax, k, ax);
+    put(g.ay, k, ay);
+    put(g.px, k, kept_x);
+    put(g.py, k, kept_y);
+  }
+  put(g.vx, k, kept_x * inv);
+  put(g.vy, k, kept_y * inv);
+  return 0.5 * (px * ax + py * ay);
 }
 
 // Eq. (28): p_i^{k+1} = p_i^k + dt f_i, with the force normal to a wall
@@ -186,8 +198,10 @@ void update_momentum(Grid& g, int k, double dt, double inv_dt, bool all) {
   const V inv = inverse_mass(at<V>(g.mass, k));
   const V fx = hx ? V{} : at<V>(g.fx, k), fy = hy ? V{} : at<V>(g.fy, k);
   const V px = fused(fx, dt, at<V>(g.px, k)), py = fused(fy, dt, at<V>(g.py, k));
-  const V ax = fused(fx, inv, at<V>(g.ax, k) * inv_dt);
-  const V ay = fused(fy, inv, at<V>(g.ay, k) * inv_dt);
+  const V taken_x = held_or_all(hx, all) ? at<V>(g.ax, k) : V{};  // by hold_momentum
+  const V taken_y = held_or_all(hy, all) ? at<V>(g.ay, k) : V{};
+  const V ax = fused(fx, inv, taken_x * inv_dt);
+  const V ay = fused(fy, inv, taken_y * inv_dt);
   put(g.ax, k, ax);
   put(g.ay, k, ay);
   put(g.vx, k, px * inv);
@@ -215,15 +229,16 @@ void enforce_walls_on_momentum(World& w) {
   int first, last;
   own_rows(w, first, last);
   if (w.transfer == TransferScheme::Apic) grid_kinetic_by_row(g, first, last, kRowGridKineticMapped);
+  const bool all = !g.friction_walls.empty() || w.transfer == TransferScheme::Apic;
   for (int j = first; j < last; ++j) {
     double removed = 0;
     along_row(
         g, j,
         [&](int k) {
-          const Lane8 taken = hold_momentum<Lane8, Int8>(g, k);
+          const Lane8 taken = hold_momentum<Lane8, Int8>(g, k, all);
           for (int l = 0; l < 8; ++l) removed -= taken[l];
         },
-        [&](int k) { removed -= hold_momentum<double, bool>(g, k); });
+        [&](int k) { removed -= hold_momentum<double, bool>(g, k, all); });
     // A held component's change is all it had: the grid loses what it takes.
     double* sums = &g.row_sums[(j - g.j_begin) * kRowSums];
     sums[kRowWallLoss] = removed;
