@@ -4,6 +4,7 @@
 // and the walls take, and the signal speed that sets the next time step.
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 #include "sim/physics/bands.hpp"
 #include "sim/physics/point_lanes.hpp"
@@ -71,6 +72,40 @@ __attribute__((always_inline)) inline void gather_one(const Grid& g, const Stenc
   }
 }
 
+// Each material's largest |v_p|^2 over a band's points, for its signal
+// speed. A group of eight points of one material (most groups) takes a
+// lane-by-lane maximum, folded into its material's when the material
+// changes: written point by point, each maximum waited for the store of the
+// one before, and perf put a fifth of G2P's samples there. A maximum is
+// exact and these skip a NaN |v_p|^2 as std::max(largest, NaN) does, so the
+// order does not change the result.
+struct FastestByMaterial {
+  double largest[256];
+  Lane8 lanes = Lane8{} - 1.0;
+  int material = -1;  // whose maximum `lanes` holds; -1 for none
+
+  explicit FastestByMaterial(int kinds) { std::fill(largest, largest + kinds, -1.0); }
+  void add(const std::uint8_t* materials, const int q[8], bool run, const Lane8& v2) {
+    const Bytes8 m = lanes_at<Bytes8>(materials, q, run);
+    std::uint64_t word;
+    std::memcpy(&word, &m, sizeof word);
+    if (word != m[0] * 0x0101010101010101ull) {  // of several materials: point by point
+      for (int l = 0; l < 8; ++l) largest[m[l]] = std::max(largest[m[l]], v2[l]);
+      return;
+    }
+    if (m[0] != material) {
+      fold();
+      material = m[0];
+    }
+    lanes = lanes < v2 ? v2 : lanes;
+  }
+  void fold() {
+    if (material < 0) return;
+    for (int l = 0; l < 8; ++l) largest[material] = std::max(largest[material], lanes[l]);
+    lanes = Lane8{} - 1.0;
+  }
+};
+
 // The sums of two points, as {ax_a, ax_c, ay_a, ay_c, vx_a, vx_c, vy_a, vy_c}:
 // each lane the same products added in the same order as a node at a time.
 __attribute__((always_inline)) inline Lane8 gather_two(const Grid& g, HeldNodes& held,
@@ -86,8 +121,7 @@ __attribute__((always_inline)) inline Lane8 gather_two(const Grid& g, HeldNodes&
 // The new velocities and positions of eight points q[0..count) of a band
 // (point_lanes.hpp), one a lane, from their sums S_ip a_i and S_ip v_i
 // (`sums`: ax, ay, vx, vy), and their terms of the band's sums `t`, added
-// point by point in the band's order. `fastest` keeps each material's
-// largest |v_p|^2. Eight at a time rather than two (until issue 17's
+// point by point in the band's order, and each material's largest |v_p|^2. Eight at a time rather than two (until issue 17's
 // twenty-ninth pass), a group stored in a run is read and written as
 // vectors: G2P took 11.6 ns a point on the 66,787-point slope, 11.1 in eight
 // lanes (one thread, the least of 14 runs in turns).
@@ -95,7 +129,7 @@ __attribute__((always_inline)) inline void update_eight(const World& w, const Po
                                                         const StepInput& in, double keep,
                                                         const int q[8], int count,
                                                         const Lane8 sums[4], PointSums& t,
-                                                        double* fastest) {
+                                                        FastestByMaterial& fastest) {
   const bool run = stored_in_a_run(q, count);
   const Lane8 &ax = sums[0], &ay = sums[1], &vx = sums[2], &vy = sums[3];
   const Lane8 dx = in.dt * vx, dy = in.dt * vy;                      // Eq. (29)
@@ -116,12 +150,12 @@ __attribute__((always_inline)) inline void update_eight(const World& w, const Po
     t.kinetic += kinetic_terms[l];
     t.moving += moving_terms[l];
     t.damped += damped_terms[l];
-    fastest[a.material[q[l]]] = std::max(fastest[a.material[q[l]]], v2[l]);
     // Zero, and not added, for a point whose stencil no wall acts on.
     const StencilWeights& st = w.weights[q[l]];
     if (w.grid.reaches_walls(st.base_i, st.base_j))
       t.walled += 0.5 * m[l] * in.dt * in.dt * walled_squared(w.grid, st);
   }
+  fastest.add(a.material, q, run, v2);
 }
 
 }  // namespace
@@ -139,8 +173,7 @@ void grid_to_points(World& w, const StepInput& in) {
     // each material: sqrt and + round correctly, so they keep order, and
     // c + sqrt(max v^2) is the largest c + sqrt(v^2) bit for bit, at one
     // square root per material instead of one per point.
-    double fastest[256];
-    std::fill(fastest, fastest + kinds, -1.0);
+    FastestByMaterial fastest(kinds);
     const int end = w.band_start[band + 1];
     HeldNodes held;
     for (int s = w.band_start[band]; s < end; s += 8) {
@@ -153,9 +186,10 @@ void grid_to_points(World& w, const StepInput& in) {
       pairs_to_lanes(pairs, sums);  // {ax, ay, vx, vy}
       update_eight(w, a, in, keep, q, count, sums, t, fastest);
     }
+    fastest.fold();
     for (int k = 0; k < kinds; ++k)
-      if (fastest[k] >= 0)
-        t.signal = std::max(t.signal, w.materials[k].wave_speed + std::sqrt(fastest[k]));
+      if (fastest.largest[k] >= 0)
+        t.signal = std::max(t.signal, w.materials[k].wave_speed + std::sqrt(fastest.largest[k]));
     store_point_sums(w, band, t);
   });
 }
