@@ -84,9 +84,15 @@ inline Lane8 fused(const Lane8& a, const Lane8& b, const Lane8& c) {
   return fused_by_lane(a, b, c);
 }
 #endif
+// b in every lane: a broadcast, where V{} + b was an addition kept at every
+// call (splat4). The two differ only for b = -0, which V{} + b made +0: the
+// product a * b is then +-0 and, added to c, can differ from the old sum only
+// where c is -0 too.
 template <class V, class = std::enable_if_t<!std::is_same_v<V, double>>>
 inline V fused(const V& a, double b, const V& c) {
-  return fused(a, V{} + b, c);
+  V every;
+  for (int l = 0; l < static_cast<int>(sizeof(V) / sizeof(double)); ++l) every[l] = b;
+  return fused(a, every, c);
 }
 
 }  // namespace sim
