@@ -63,20 +63,6 @@ inline Lane8 square_root(const Lane8& x) {
   return r;
 }
 
-// Whether a mask holds in every lane (one point: whether it holds). The
-// lanes are ANDed pairwise in registers: a loop over them that returned at
-// the first lane that failed was compiled to a store of the mask and eight
-// loads and branches, and perf put 4 % of the stress phase on it; the
-// phase's least time over 6 to 8 rounds did not move beyond the noise
-// (issue 17, thirtieth pass).
-inline bool every(bool m) { return m; }
-inline bool every(const Int8& m) {
-  const Int8 set = m != 0;  // all bits of a lane that holds
-  const Int8 four = set & __builtin_shufflevector(set, set, 4, 5, 6, 7, 0, 1, 2, 3);
-  const Int8 two = four & __builtin_shufflevector(four, four, 2, 3, 0, 1, 2, 3, 0, 1);
-  return (two[0] & two[1]) != 0;
-}
-
 template <class T>
 T dot(const Principal3Of<T>& a, const Principal3Of<T>& b) {
   return fused(a[2], b[2], fused(a[1], b[1], a[0] * b[0]));

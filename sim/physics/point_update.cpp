@@ -138,7 +138,7 @@ void update_eight_stresses(World& w, const int* p, int count, double dt, const S
   elastic_predictor(s, de, m);                // Eq. (21)
   Int8 yielded = was_yielded;
   // Eqs. (20)-(23), soil only: a group of house points skips the return.
-  if (!mc_return::every(m.plastic == 0)) {
+  if (!every(m.plastic == 0)) {
     StressOf<Lane8> returned = s;
     mc_return::Regions<Lane8> regions;
     const Int8 elastic = mc_return::return_in_place(m.mohr_coulomb, returned, regions);

@@ -139,12 +139,7 @@ V inverse_mass(const V& m) {
 
 // Whether a wall holds a component at any of the nodes.
 inline bool any_held(bool hx, bool hy) { return hx || hy; }
-inline bool any_held(const Int8& hx, const Int8& hy) {
-  const Int8 either = hx | hy;
-  for (int l = 0; l < 8; ++l)
-    if (either[l]) return true;
-  return false;
-}
+inline bool any_held(const Int8& hx, const Int8& hy) { return !every((hx | hy) == 0); }
 
 // Where the nodal phases read a component back: at a held one, or
 // everywhere where friction walls or APIC (`all`) may have set it.
