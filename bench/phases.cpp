@@ -109,8 +109,11 @@ class StopInSlide : public sim::Observer {
  public:
   explicit StopInSlide(double seconds) : seconds_(seconds) {}
   void progress(const sim::Simulation& run, const sim::StageSpec& stage, long) override {
-    if (stage.type == sim::StageType::Dynamic && run.stage_time() >= seconds_) throw StopHere{};
+    if (stage.type != sim::StageType::Dynamic || run.stage_time() < seconds_) return;
+    damping = stage.damping;
+    throw StopHere{};
   }
+  double damping = 0;  // of the stage stopped in
 
  private:
   double seconds_;
@@ -123,6 +126,7 @@ sim::World world_in_slide(const sim::Scenario& s, double seconds, sim::StepInput
   } catch (const StopHere&) {
     in.dt = run.next_time_step();
     in.gravity = s.gravity;
+    in.damping = stop.damping;
     std::printf("from t = %.3f s of the slide, dt = %.3g s\n", run.stage_time(), in.dt);
     return run.world();
   }
