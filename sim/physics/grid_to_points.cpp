@@ -123,8 +123,9 @@ __attribute__((always_inline)) inline Lane8 gather_two(const Grid& g, HeldNodes&
 // (`sums`: ax, ay, vx, vy), and their terms of the band's sums `t`, added
 // point by point in the band's order, and each material's largest |v_p|^2.
 // Eight at a time rather than two (until issue 17's twenty-ninth pass), a
-// group stored in a run is read and written as vectors: G2P took 11.6 ns a point on the 66,787-point slope, 11.1 in eight
-// lanes (one thread, the least of 14 runs in turns).
+// group stored in a run is read and written as vectors: G2P took 11.6 ns a
+// point on the 66,787-point slope, 11.1 in eight lanes (one thread, the
+// least of 14 runs in turns).
 __attribute__((always_inline)) inline void update_eight(const World& w, const PointArrays& a,
                                                         const StepInput& in, double keep,
                                                         const int q[8], int count,

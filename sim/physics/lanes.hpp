@@ -40,7 +40,13 @@ inline Lane8 join4(const Lane4& a, const Lane4& b) {
 }
 // x in every lane, a broadcast: Lane4{} + x is an addition the compiler
 // must keep (0 + -0 is +0), one per use where the step took it so.
-inline Lane4 splat4(double x) { return Lane4{x, x, x, x}; }
+template <class V>
+inline V splat(double x) {
+  V v;
+  for (int l = 0; l < static_cast<int>(sizeof(V) / sizeof(double)); ++l) v[l] = x;
+  return v;
+}
+inline Lane4 splat4(double x) { return splat<Lane4>(x); }
 inline Lane4 low4(const Lane8& v) { return __builtin_shufflevector(v, v, 0, 1, 2, 3); }
 inline Lane4 high4(const Lane8& v) { return __builtin_shufflevector(v, v, 4, 5, 6, 7); }
 
@@ -98,15 +104,13 @@ inline Lane8 fused(const Lane8& a, const Lane8& b, const Lane8& c) {
   return fused_by_lane(a, b, c);
 }
 #endif
-// b in every lane: a broadcast, where V{} + b was an addition kept at every
-// call (splat4). The two differ only for b = -0, which V{} + b made +0: the
+// b in every lane: a broadcast (splat), where V{} + b was an addition kept
+// at every call. The two differ only for b = -0, which V{} + b made +0: the
 // product a * b is then +-0 and, added to c, can differ from the old sum only
 // where c is -0 too.
 template <class V, class = std::enable_if_t<!std::is_same_v<V, double>>>
 inline V fused(const V& a, double b, const V& c) {
-  V spread;
-  for (int l = 0; l < static_cast<int>(sizeof(V) / sizeof(double)); ++l) spread[l] = b;
-  return fused(a, spread, c);
+  return fused(a, splat<V>(b), c);
 }
 
 }  // namespace sim

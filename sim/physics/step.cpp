@@ -141,6 +141,14 @@ V inverse_mass(const V& m) {
 inline bool any_held(bool hx, bool hy) { return hx || hy; }
 inline bool any_held(const Int8& hx, const Int8& hy) { return !every((hx | hy) == 0); }
 
+// Whether later phases read every nodal value the holds and the update
+// make: friction walls read and change p_i, a_i and f_i at their nodes, and
+// APIC sums the grid's kinetic energy from p_i. Without them the phases
+// below store only what G2P and the stress phase read.
+bool all_nodal_values_read(const World& w) {
+  return !w.grid.friction_walls.empty() || w.transfer == TransferScheme::Apic;
+}
+
 // Where the nodal phases read a component back: at a held one, or
 // everywhere where friction walls or APIC (`all`) may have set it.
 inline bool held_or_all(bool h, bool all) { return h || all; }
@@ -224,7 +232,7 @@ void enforce_walls_on_momentum(World& w) {
   int first, last;
   own_rows(w, first, last);
   if (w.transfer == TransferScheme::Apic) grid_kinetic_by_row(g, first, last, kRowGridKineticMapped);
-  const bool all = !g.friction_walls.empty() || w.transfer == TransferScheme::Apic;
+  const bool all = all_nodal_values_read(w);
   for (int j = first; j < last; ++j) {
     double removed = 0;
     along_row(
@@ -249,7 +257,7 @@ void update_nodal_momentum(World& w, double dt) {
   WorkClock clock(w);
   Grid& g = w.grid;
   const double inv_dt = 1.0 / dt;
-  const bool all = !g.friction_walls.empty() || w.transfer == TransferScheme::Apic;
+  const bool all = all_nodal_values_read(w);
   int first, last;
   own_rows(w, first, last);
   for (int j = first; j < last; ++j)
