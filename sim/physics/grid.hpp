@@ -53,6 +53,12 @@ struct Grid {
   // Every nodal loop runs over this window only, so empty air costs nothing.
   int i_begin = 0, i_end = 0, j_begin = 0, j_end = 0;
 
+  // Per row of the window, the nodes the step resets and updates:
+  // [row_span[2 r], row_span[2 r + 1]) along i for row j_begin + r, the
+  // nodes of the row that points weight (and the gaps between them), or the
+  // whole window (step.cpp).
+  std::vector<int> row_span;
+
   // The nodes no wall acts on: [quiet_i_begin, quiet_i_end) x
   // [quiet_j_begin, quiet_j_end). Their held_ax, held_ay are zero, so a point
   // whose stencil lies inside gets no velocity change from the walls.

@@ -234,6 +234,8 @@ void set_window(World& w, int threads) {
   g.j_begin = j_lo;
   g.j_end = j_hi + 3;
   w.order.resize(n);
+  w.base_row_span.resize(2 * static_cast<std::size_t>(std::max(0, g.j_end - 2 - g.j_begin)));
+  g.row_span.resize(2 * static_cast<std::size_t>(g.j_end - g.j_begin));
   const int bands = (g.j_end - g.j_begin + kBandRows - 1) / kBandRows;
   w.band_start.resize(static_cast<std::size_t>(bands) + 1);
   w.band_done.resize(static_cast<std::size_t>(bands));
@@ -255,42 +257,51 @@ void count_in_window_bins(World& w, int t, int lo, int hi) {
 // thread: thread t's points of bin k go after those of threads < t, and each
 // thread takes its points in index order, so the sort is stable by point
 // index, the same order whatever the number of threads. Each thread does the
-// prefix over its own run of bins, from the totals of the runs before it, and
-// notes where each band starts: band b starts at the first point whose base
-// node is in its rows, the window's base rows [b, b + 1) kBandRows.
+// prefix over its own run of bin rows, from the totals of the runs before
+// it, and notes where each band starts: band b starts at the first point
+// whose base node is in its rows, the window's base rows [b, b + 1)
+// kBandRows. It notes too each base row's span, its first and last base
+// node with points (base_row_span), for the grid's row spans (step.cpp).
 void prefix_own_bins(World& w, int t, int threads) {
   // Locals: a store through an int* could otherwise be a store to w.bins or
   // w.bin_width, which the loops would then read again at every bin.
   int* const counts = w.thread_counts.data();
   const long bins = w.bins;
   const int width = w.bin_width;
-  const int first = static_cast<int>(bins * t / threads);
-  const int end = static_cast<int>(bins * (t + 1) / threads);
+  const int rows = width > 0 ? static_cast<int>(bins / width) : 0;
+  const int first_row = rows * t / threads, end_row = rows * (t + 1) / threads;
   int total = 0;
   for (int u = 0; u < threads; ++u)
-    for (int k = first; k < end; ++k) total += counts[u * bins + k];
+    for (long k = long{first_row} * width; k < long{end_row} * width; ++k) total += counts[u * bins + k];
   w.thread_totals[t] = total;
 #pragma omp barrier
   int running = 0;
   for (int u = 0; u < t; ++u) running += w.thread_totals[u];
   const int base_rows = w.grid.j_end - 2 - w.grid.j_begin;
-  // The bins a row at a time: where a row starts, a band may start. With a
-  // division per bin to find the rows' starts and w.bins read again after
-  // every store, the prefix took 2.0 to 2.6 ns a point on the 66,787-point
-  // slope, whose window is mostly air; 0.8 to 1.1 without (one thread,
-  // issue 17, thirtieth pass).
-  for (int k = first; k < end;) {
-    const int row_end = std::min(end, (k / width + 1) * width);
-    if (k % width == 0) {
-      const int row = w.bin_j0 + k / width - w.grid.j_begin;
-      if (row >= 0 && row < base_rows && row % kBandRows == 0) w.band_start[row / kBandRows] = running;
-    }
-    for (; k < row_end; ++k)
+  // The bins a row at a time, from locals: with a division per bin to find
+  // the rows' starts and w.bins read again after every store, the prefix
+  // took 2.0 to 2.6 ns a point on the 66,787-point slope, whose window is
+  // mostly air; 0.8 to 1.1 without (one thread, issue 17, thirtieth pass).
+  for (int r = first_row; r < end_row; ++r) {
+    const int row = w.bin_j0 + r - w.grid.j_begin;  // the window's base row
+    const bool in_window = row >= 0 && row < base_rows;
+    if (in_window && row % kBandRows == 0) w.band_start[row / kBandRows] = running;
+    int lo = width, hi = -1;
+    for (int i = 0; i < width; ++i) {
+      const long k = long{r} * width + i;
+      const int before = running;
       for (int u = 0; u < threads; ++u) {
         const int here = counts[u * bins + k];
         counts[u * bins + k] = running;
         running += here;
       }
+      hi = running != before ? i : hi;
+      lo = std::min(lo, running != before ? i : width);
+    }
+    if (in_window) {
+      w.base_row_span[2 * row] = w.bin_i0 + lo;
+      w.base_row_span[2 * row + 1] = w.bin_i0 + hi;
+    }
   }
 }
 

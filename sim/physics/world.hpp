@@ -69,6 +69,9 @@ struct World {
   std::vector<int> thread_counts; // counting sort: per thread, points per bin (base node)
   std::vector<int> thread_window; // per thread: touched window, first point off the grid, points off the bins
   std::vector<int> thread_totals; // per thread: points in its run of bins
+  // Per base row of the window: the first and last base node i with points
+  // (the first > the last for a row without), from the counting sort.
+  std::vector<int> base_row_span;
   // The counting sort's bins: base nodes [bin_i0, bin_i0 + bin_width) x
   // [bin_j0, bin_j0 + bins / bin_width), row-major (locate.cpp).
   int bins = 0, bin_i0 = 0, bin_j0 = 0, bin_width = 0;

@@ -39,6 +39,33 @@ TEST(Transfer, PointsToGridKeepsMassAndMomentum) {
   EXPECT_NEAR(gpy, py, 1e-10 * mass);
 }
 
+// The reset, the walls and the nodal update visit each node row's span only
+// (step.cpp): every node a point weights must lie in its row's span, and
+// beside a step in the soil's outline a row is narrower than the window.
+TEST(Transfer, RowSpansHoldEveryNodeAPointWeights) {
+  sim::World w = sim::make_world(
+      simtest::block_scenario({1.0, 1.0}, {3.0, 2.5}, 0.25, 2, {0, 0}, {5, 4}));
+  for (std::size_t p = 0; p < w.points.size(); ++p)
+    if (w.points.y[p] > 1.75) w.points.x[p] += 1.1;  // the upper half moved right
+  sim::locate_points(w);
+  sim::reset_grid(w);
+  const sim::Grid& g = w.grid;
+  const auto span = [&](int j) { return &g.row_span[2 * (j - g.j_begin)]; };
+  int narrower = 0;
+  for (int j = g.j_begin; j < g.j_end; ++j)
+    narrower += span(j)[0] > g.i_begin || span(j)[1] < g.i_end;
+  EXPECT_GE(narrower, 4);
+  for (std::size_t p = 0; p < w.points.size(); ++p) {
+    const sim::StencilWeights& st = w.weights[p];
+    for (int b = 0; b < 3; ++b)
+      for (int a = 0; a < 3; ++a) {
+        const int* s = span(st.base_j + b);
+        EXPECT_GE(st.base_i + a, s[0]) << "point " << p << ", row " << st.base_j + b;
+        EXPECT_LT(st.base_i + a, s[1]) << "point " << p << ", row " << st.base_j + b;
+      }
+  }
+}
+
 TEST(Transfer, RigidTranslationIsReproduced) {
   // A free block moving at constant velocity without gravity: no strain, no
   // stress, every point moves by v t and keeps its velocity.
