@@ -2,9 +2,11 @@
 // T = Lane8) against the one-point return, bit for bit: the trials of
 // test_return.cpp, eight at a time, each lane on another case's surface, so
 // one vector holds several regions and surfaces at once. Also trials with
-// equal in-plane stresses, where the principal direction is undefined.
+// equal in-plane stresses, where the principal direction is undefined, and
+// trials a rounding away from the surface on either side.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstring>
 
 #include "sim/physics/mohr_coulomb_return.hpp"
@@ -87,6 +89,57 @@ TEST(MohrCoulombReturnLanes, EqualInPlaneStressesKeepTheirBits) {
                                 {a + R, a + R, 0, a - R}, {-R, -R, 0, -R}};
   std::copy(cases, cases + 8, in.trial);
   EXPECT_GT(compare(in), 0);
+}
+
+// The eight-point form first tests f with radii from the processor's
+// estimate of 1 / sqrt (radius_above) and, where every lane is inside, keeps
+// the trials without taking square roots. Trials a step of the bisection
+// apart across the surface, on the ray from a hydrostatic stress inside:
+// eight just inside must stay as they are, and one just outside among them
+// must still be returned, bit for bit as one at a time.
+TEST(MohrCoulombReturnLanes, TrialsAtTheSurfaceKeepTheirBits) {
+  const std::vector<Case> cases = all_cases();
+  std::vector<const sim::MohrCoulomb*> surfaces;
+  std::vector<sim::Stress> inside, outside;
+  std::vector<Model> models;
+  for (const Case& c : cases) models.push_back(model_of(c));
+  for (std::size_t ci = 0; ci < cases.size(); ++ci) {
+    const Model& md = models[ci];
+    const double p = md.apex - 100e3;
+    const sim::Stress from{p, p, 0, p};
+    const auto at = [&](const sim::Stress& to, double t) {
+      return sim::Stress{from.xx + t * (to.xx - from.xx), from.yy + t * (to.yy - from.yy),
+                         from.xy + t * (to.xy - from.xy), from.zz + t * (to.zz - from.zz)};
+    };
+    const auto elastic = [&](sim::Stress s) {
+      return sim::mohr_coulomb_return(md.mc, s) == ReturnRegion::Elastic;
+    };
+    const std::vector<Trial> trials = make_trials(md, seed_of(static_cast<int>(ci)));
+    for (std::size_t n = 0; n < trials.size() && n < 200; ++n) {
+      const sim::Stress to = stress_of(trials[n].s_b, trials[n].zz_slot, trials[n].theta);
+      if (elastic(to)) continue;
+      double lo = 0, hi = 1;  // elastic at lo, not at hi
+      for (double mid = 0.5; mid > lo && mid < hi; mid = 0.5 * (lo + hi)) (elastic(at(to, mid)) ? lo : hi) = mid;
+      surfaces.push_back(&md.mc);
+      inside.push_back(at(to, lo));
+      outside.push_back(at(to, hi));
+    }
+  }
+  ASSERT_GE(inside.size(), 64u);
+  long returned = 0;
+  for (std::size_t n = 0; n + 8 <= inside.size(); n += 8) {
+    Lanes in;
+    for (int l = 0; l < 8; ++l) {
+      in.surface[l] = surfaces[n + l];
+      in.trial[l] = inside[n + l];
+    }
+    EXPECT_EQ(compare(in), 0);
+    const int l = static_cast<int>(n / 8 % 8);
+    in.trial[l] = outside[n + l];
+    returned += compare(in);
+    if (HasFailure()) return;
+  }
+  EXPECT_EQ(returned, static_cast<long>(inside.size() / 8));
 }
 
 }  // namespace
