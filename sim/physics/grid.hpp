@@ -50,7 +50,8 @@ struct Grid {
   NodeArray<double> wall_impulse_x, wall_impulse_y;
 
   // Nodes that particles touched this step: [i_begin, i_end) x [j_begin, j_end).
-  // Every nodal loop runs over this window only, so empty air costs nothing.
+  // Every nodal loop runs over this window only, and within a row over its
+  // span (row_span) where the scene allows, so empty air costs nothing.
   int i_begin = 0, i_end = 0, j_begin = 0, j_end = 0;
 
   // Per row of the window, the nodes the step resets and updates:
