@@ -66,6 +66,29 @@ TEST(Transfer, RowSpansHoldEveryNodeAPointWeights) {
   }
 }
 
+// Friction walls and APIC read nodal values all over the window
+// (wall_friction.cpp, apic.cpp): with either, every row's span is the
+// window's row, the staircase of the test above notwithstanding.
+TEST(Transfer, RowSpansAreTheWindowWithFrictionWallsOrApic) {
+  for (const bool apic : {false, true}) {
+    sim::Scenario s = simtest::block_scenario({1.0, 1.0}, {3.0, 2.5}, 0.25, 2, {0, 0}, {5, 4});
+    if (apic)
+      s.transfer = sim::TransferScheme::Apic;
+    else
+      s.boundaries.bottom = {sim::BoundaryKind::Friction, 0.3};
+    sim::World w = sim::make_world(s);
+    for (std::size_t p = 0; p < w.points.size(); ++p)
+      if (w.points.y[p] > 1.75) w.points.x[p] += 1.1;
+    sim::locate_points(w);
+    sim::reset_grid(w);
+    const sim::Grid& g = w.grid;
+    for (int j = g.j_begin; j < g.j_end; ++j) {
+      EXPECT_EQ(g.row_span[2 * (j - g.j_begin)], g.i_begin) << (apic ? "APIC" : "friction") << ", row " << j;
+      EXPECT_EQ(g.row_span[2 * (j - g.j_begin) + 1], g.i_end) << (apic ? "APIC" : "friction") << ", row " << j;
+    }
+  }
+}
+
 TEST(Transfer, RigidTranslationIsReproduced) {
   // A free block moving at constant velocity without gravity: no strain, no
   // stress, every point moves by v t and keeps its velocity.
