@@ -6,7 +6,6 @@
 // trials a rounding away from the surface on either side.
 #include <gtest/gtest.h>
 
-#include <cmath>
 #include <cstring>
 
 #include "sim/physics/mohr_coulomb_return.hpp"
@@ -119,7 +118,8 @@ TEST(MohrCoulombReturnLanes, TrialsAtTheSurfaceKeepTheirBits) {
       const sim::Stress to = stress_of(trials[n].s_b, trials[n].zz_slot, trials[n].theta);
       if (elastic(to)) continue;
       double lo = 0, hi = 1;  // elastic at lo, not at hi
-      for (double mid = 0.5; mid > lo && mid < hi; mid = 0.5 * (lo + hi)) (elastic(at(to, mid)) ? lo : hi) = mid;
+      for (double mid = 0.5; mid > lo && mid < hi; mid = 0.5 * (lo + hi))
+        (elastic(at(to, mid)) ? lo : hi) = mid;
       surfaces.push_back(&md.mc);
       inside.push_back(at(to, lo));
       outside.push_back(at(to, hi));
