@@ -107,9 +107,27 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "usage: energy_audit SCENARIO [cell_size] [courant]\n");
     return 2;
   }
-  sim::Scenario s = sim::load_scenario(argv[1]);
-  if (argc > 2) s.cell_size = std::atof(argv[2]);
-  if (argc > 3) s.time_step.courant = std::atof(argv[3]);
+  // The cell size and Courant number, where given, as positive numbers:
+  // atof would read "C" as 0 and step with dt = 0.
+  double given[2] = {0, 0};
+  for (int a = 2; a < argc && a < 4; ++a) {
+    char* end = nullptr;
+    given[a - 2] = std::strtod(argv[a], &end);
+    if (end == argv[a] || *end != '\0' || !(given[a - 2] > 0)) {
+      std::fprintf(stderr, "energy_audit: %s = '%s': expected a positive number\n",
+                   a == 2 ? "cell_size" : "courant", argv[a]);
+      return 2;
+    }
+  }
+  sim::Scenario s;
+  try {
+    s = sim::load_scenario(argv[1]);
+  } catch (const sim::ScenarioError& e) {
+    std::fprintf(stderr, "energy_audit: %s\n", e.what());
+    return 2;
+  }
+  if (argc > 2) s.cell_size = given[0];
+  if (argc > 3) s.time_step.courant = given[1];
   s.output.frame_interval = 0;
   s.output.vtk = "none";
   const sim::StageSpec stage = s.stages.back();
