@@ -88,16 +88,18 @@ T circle_radius(const StressOf<T>& s) {
 // Eight radii, each at least circle_radius's, from the processor's 14-bit
 // estimate of 1 / sqrt (relative error below 2^-14) raised by 2^-12: the
 // vector square root's latency held up the stress phase, and most groups of
-// a slope at rest are inside the surface. Without AVX-512, the radii.
-inline Lane8 radius_above(const StressOf<Lane8>& s) {
+// a slope at rest are inside the surface. Only where the build has the
+// estimate (AVX-512); without it, return_in_place does not call this.
 #if defined(__AVX512F__)
+constexpr bool kRadiusEstimate = true;
+inline Lane8 radius_above(const StressOf<Lane8>& s) {
   const Lane8 q = squared_radius(s);
   const Lane8 estimate = q * _mm512_rsqrt14_pd(q) * (1.0 + 0x1p-12);
   return q > 0 ? estimate : Lane8{};  // q * rsqrt(q) is NaN at q = 0
-#else
-  return circle_radius(s);
-#endif
 }
+#else
+constexpr bool kRadiusEstimate = false;
+#endif
 
 // The principal values sorted, s1 >= s2 >= s3, and where sigma_zz went:
 // plane strain makes it a principal stress that may sort anywhere.
@@ -192,16 +194,17 @@ Regions<T> plastic_return(const C& mc, Principal3Of<T>& s, const T& f) {
 // isotropic f, g: the return changes principal values only, so they go back
 // on the trial's principal directions.
 //
-// Eight points first test f with radius_above. Every operation of
-// principal_values and yield_function is correctly rounded, and so
-// monotone, and f grows with the radius (k > 0): f <= 0 in every lane with
+// Where the build has radius_above, eight points first test f with it (with
+// the radii themselves the test would be the exact one below, done twice).
+// Every operation of principal_values and yield_function is correctly
+// rounded, and so monotone, and f grows with the radius (k > 0): f <= 0 in every lane with
 // radii at least the square roots means f <= 0 with the square roots. The
 // trials are then left as they are without them: the same result, bit for
 // bit (a lane whose k is not positive is a house point's, whose result the
 // stress phase does not keep).
 template <class T, class C>
 auto return_in_place(const C& mc, StressOf<T>& s, Regions<T>& regions) {
-  if constexpr (!std::is_same_v<T, double>) {
+  if constexpr (kRadiusEstimate && !std::is_same_v<T, double>) {
     const auto inside = yield_function<T>(mc, principal_values(s, radius_above(s)).s) <= 0;
     if (every(inside)) return inside;
   }
@@ -209,8 +212,9 @@ auto return_in_place(const C& mc, StressOf<T>& s, Regions<T>& regions) {
   Sorted<T> sorted = principal_values(s, radius);
   const T f = yield_function<T>(mc, sorted.s);
   const auto elastic = f <= 0;
-  // Inside the surface everywhere: the trials stay as they are. Most groups
-  // of a slope at rest take this branch, which selects alone never skip.
+  // Inside the surface everywhere: the trials stay as they are. Groups the
+  // estimate could not tell (or every group, without it) take this branch,
+  // which selects alone never skip.
   if (every(elastic)) return elastic;
   T cos2, sin2;
   principal_directions(s, radius, cos2, sin2);
