@@ -11,6 +11,7 @@
 
 #include "sim/physics/bands.hpp"
 #include "sim/physics/point_order.hpp"
+#include "sim/physics/stencil_stores.hpp"
 #include "sim/physics/step.hpp"
 
 namespace sim {
@@ -62,39 +63,6 @@ int* counts_of(World& w, int t) {
   return w.thread_counts.data() + static_cast<std::size_t>(t) * w.bins;
 }
 
-// Eight points' stencils stored, lanes [0, count) of the six weight lanes
-// (wx then wy) and the base nodes: a transposition in registers makes each
-// point's 56 bytes one vector, stored at once, where going through a buffer
-// on the stack cost six loads and stores a point.
-void store_stencils(StencilWeights* out, int count, const Lane8 w[6], const Int8& base_i,
-                    const Int8& base_j) {
-  static_assert(sizeof(StencilWeights) == 7 * sizeof(double), "six weights, two ints");
-  // The base nodes as StencilWeights lays them out: base_i in the low half
-  // of the eighth word, base_j in the high half.
-  const Int8 ij = (base_i & 0xffffffff) | (base_j << 32);
-  const Lane8 a[8] = {w[0], w[1], w[2], w[3], w[4], w[5], reinterpret_cast<Lane8>(ij), Lane8{}};
-  Lane8 t[8], u[8], point[8];
-  for (int k = 0; k < 4; ++k) {
-    t[2 * k] = __builtin_shufflevector(a[2 * k], a[2 * k + 1], 0, 8, 2, 10, 4, 12, 6, 14);
-    t[2 * k + 1] = __builtin_shufflevector(a[2 * k], a[2 * k + 1], 1, 9, 3, 11, 5, 13, 7, 15);
-  }
-  for (int k = 0; k < 2; ++k)
-    for (int odd = 0; odd < 2; ++odd) {
-      const Lane8 &lo = t[4 * k + odd], &hi = t[4 * k + 2 + odd];
-      u[4 * k + 2 * odd] = __builtin_shufflevector(lo, hi, 0, 1, 8, 9, 4, 5, 12, 13);
-      u[4 * k + 2 * odd + 1] = __builtin_shufflevector(lo, hi, 2, 3, 10, 11, 6, 7, 14, 15);
-    }
-  // u[m] (m = 2 * odd + pair) holds fields 0-3 of points {m', m' + 4}, fields
-  // 4-7 in u[m + 4], where m' = odd + 2 * pair.
-  for (int m = 0; m < 4; ++m) {
-    const int l = (m >> 1) + 2 * (m & 1);
-    point[l] = __builtin_shufflevector(u[m], u[m + 4], 0, 1, 2, 3, 8, 9, 10, 11);
-    point[l + 4] = __builtin_shufflevector(u[m], u[m + 4], 4, 5, 6, 7, 12, 13, 14, 15);
-  }
-  for (int l = 0; l < count; ++l)
-    std::memcpy(static_cast<void*>(&out[l]), &point[l], sizeof(StencilWeights));
-}
-
 // Stencils of the points of Lane8 blocks [first_block, end_block), eight
 // points at a time (gimp.hpp; the last block repeats its last point where the
 // points run out), each point counted in its bin (`counts`, the thread's,
@@ -108,6 +76,7 @@ void compute_stencils(World& w, int first_block, int end_block, int* counts, int
   // The window's bounds lane by lane, reduced over the lanes at the end.
   Int8 i_lo = Int8{} + g.nx, i_hi = Int8{} - 1, j_lo = Int8{} + g.ny, j_hi = Int8{} - 1;
   int bad = n, off_bins = 0;
+  const bool stream = n >= w.stream_stencils_from;
   for (int blk = first_block; blk < end_block; ++blk) {
     const int first = 8 * blk, count = std::min(8, n - first);
     Lane8 x, y;
@@ -126,7 +95,7 @@ void compute_stencils(World& w, int first_block, int end_block, int* counts, int
     Lane8 lanes[6], slopes[3];
     gimp_axis(x, g.origin_x, w.gimp, base_i, &lanes[0], slopes);
     gimp_axis(y, g.origin_y, w.gimp, base_j, &lanes[3], slopes);
-    store_stencils(&w.weights[first], count, lanes, base_i, base_j);
+    store_stencils(&w.weights[first], count, lanes, base_i, base_j, stream);
     // x - x is 0 for a finite x and NaN otherwise. The lanes past count
     // repeat a point, so they change no bound.
     const Int8 inside = (x - x == 0) & (y - y == 0) & (base_i >= 0) & (base_j >= 0) &
@@ -159,6 +128,7 @@ void compute_stencils(World& w, int first_block, int end_block, int* counts, int
     partial[3] = std::max(partial[3], static_cast<int>(j_hi[l]));
   }
   std::copy(partial, partial + kWindowInts, window);
+  if (stream) _mm_sfence();  // the streamed lines before the barrier that hands them on
 }
 
 // Within one base node the counting sort leaves points by slot; where the

@@ -6,6 +6,7 @@
 #include <atomic>
 #include <cstddef>
 #include <cstdint>
+#include <new>
 #include <stdexcept>
 #include <vector>
 
@@ -49,6 +50,35 @@ struct alignas(64) ThreadPace {
   int first_band_by_pace = 0;  // where the pace alone would start its bands (partition_bands)
 };
 
+// Memory on 64-byte boundaries: locate can write a block of eight stencils
+// as seven whole cache lines (locate.cpp).
+template <class T>
+struct CacheLineAligned {
+  using value_type = T;
+  CacheLineAligned() = default;
+  template <class U>
+  CacheLineAligned(const CacheLineAligned<U>&) {}
+  T* allocate(std::size_t n) {
+    return static_cast<T*>(::operator new(n * sizeof(T), std::align_val_t{64}));
+  }
+  void deallocate(T* p, std::size_t) { ::operator delete(p, std::align_val_t{64}); }
+  template <class U>
+  bool operator==(const CacheLineAligned<U>&) const { return true; }
+  template <class U>
+  bool operator!=(const CacheLineAligned<U>&) const { return false; }
+};
+using StencilArray = std::vector<StencilWeights, CacheLineAligned<StencilWeights>>;
+
+// A stencil array larger than the last-level cache is written with streaming
+// stores, which do not first read each line they fill; below it, ordinary
+// stores leave the stencils in cache for the phases that read them next.
+// `bench/phases REFINE N --threads 2 --whole-step`, six 2-thread runs each,
+// in turns, streaming against ordinary stores (issue 17, thirty-second pass):
+// 6,552,200 points 34.2-39.3 against 35.8-41.1 ns a point-step; 1,638,050
+// and 920,000 points no difference beyond the runs' spread; 409,965 points
+// 31.9-37.3 against 28.0-29.8, and 25,538 points 34.0-45.1 against 30.7-37.7.
+constexpr long kStreamStencilsFrom = 2'000'000;
+
 struct World {
   Particles points;
   Grid grid;
@@ -62,7 +92,10 @@ struct World {
   std::vector<int> scene_index;
 
   // Scratch, rebuilt every step.
-  std::vector<StencilWeights> weights;  // per point: its stencil's S_ip and base node
+  StencilArray weights;  // per point: its stencil's S_ip and base node
+  // From this many points on, locate streams the stencils to memory
+  // (locate.cpp); tests lower it to compare the two ways of storing them.
+  long stream_stencils_from = kStreamStencilsFrom;
   std::vector<int> bin_key;       // per point: the bin of its stencil's base node
   std::vector<int> order;         // points sorted by their stencil's base node
   std::vector<int> band_start;    // order[band_start[b] .. band_start[b+1]) is band b

@@ -1,0 +1,71 @@
+// How locate stores eight points' stencils (locate.cpp): a transposition in
+// registers, then each point's 56 bytes as one vector, or, for an array
+// larger than the last-level cache, the block's seven whole cache lines with
+// streaming stores (world.hpp, kStreamStencilsFrom).
+#pragma once
+
+#include <cstring>
+
+#include "sim/physics/gimp.hpp"
+#include "sim/physics/lanes.hpp"
+
+namespace sim {
+
+// Eight points' stencils, point[l] holding point l's seven words in lanes
+// 0-6, written as the block's seven whole cache lines (8 x 56 B = 7 x 64 B)
+// with streaming stores, which write a line without first reading it.
+inline void stream_block(StencilWeights* out, const Lane8 point[8]) {
+  double* const line = reinterpret_cast<double*>(out);
+#if defined(__AVX512F__)
+  // Line k holds words 8k..8k+7 of the block: the tail of point k from its
+  // word k, then the head of point k + 1.
+  _mm512_stream_pd(line + 0, __builtin_shufflevector(point[0], point[1], 0, 1, 2, 3, 4, 5, 6, 8));
+  _mm512_stream_pd(line + 8, __builtin_shufflevector(point[1], point[2], 1, 2, 3, 4, 5, 6, 8, 9));
+  _mm512_stream_pd(line + 16, __builtin_shufflevector(point[2], point[3], 2, 3, 4, 5, 6, 8, 9, 10));
+  _mm512_stream_pd(line + 24, __builtin_shufflevector(point[3], point[4], 3, 4, 5, 6, 8, 9, 10, 11));
+  _mm512_stream_pd(line + 32, __builtin_shufflevector(point[4], point[5], 4, 5, 6, 8, 9, 10, 11, 12));
+  _mm512_stream_pd(line + 40, __builtin_shufflevector(point[5], point[6], 5, 6, 8, 9, 10, 11, 12, 13));
+  _mm512_stream_pd(line + 48, __builtin_shufflevector(point[6], point[7], 6, 8, 9, 10, 11, 12, 13, 14));
+#else
+  for (int l = 0; l < 8; ++l) std::memcpy(static_cast<void*>(&out[l]), &point[l], sizeof(StencilWeights));
+#endif
+}
+
+// Eight points' stencils stored, lanes [0, count) of the six weight lanes
+// (wx then wy) and the base nodes: a transposition in registers makes each
+// point's 56 bytes one vector, stored at once, where going through a buffer
+// on the stack cost six loads and stores a point.
+inline void store_stencils(StencilWeights* out, int count, const Lane8 w[6], const Int8& base_i,
+                    const Int8& base_j, bool stream) {
+  static_assert(sizeof(StencilWeights) == 7 * sizeof(double), "six weights, two ints");
+  // The base nodes as StencilWeights lays them out: base_i in the low half
+  // of the eighth word, base_j in the high half.
+  const Int8 ij = (base_i & 0xffffffff) | (base_j << 32);
+  const Lane8 a[8] = {w[0], w[1], w[2], w[3], w[4], w[5], reinterpret_cast<Lane8>(ij), Lane8{}};
+  Lane8 t[8], u[8], point[8];
+  for (int k = 0; k < 4; ++k) {
+    t[2 * k] = __builtin_shufflevector(a[2 * k], a[2 * k + 1], 0, 8, 2, 10, 4, 12, 6, 14);
+    t[2 * k + 1] = __builtin_shufflevector(a[2 * k], a[2 * k + 1], 1, 9, 3, 11, 5, 13, 7, 15);
+  }
+  for (int k = 0; k < 2; ++k)
+    for (int odd = 0; odd < 2; ++odd) {
+      const Lane8 &lo = t[4 * k + odd], &hi = t[4 * k + 2 + odd];
+      u[4 * k + 2 * odd] = __builtin_shufflevector(lo, hi, 0, 1, 8, 9, 4, 5, 12, 13);
+      u[4 * k + 2 * odd + 1] = __builtin_shufflevector(lo, hi, 2, 3, 10, 11, 6, 7, 14, 15);
+    }
+  // u[m] (m = 2 * odd + pair) holds fields 0-3 of points {m', m' + 4}, fields
+  // 4-7 in u[m + 4], where m' = odd + 2 * pair.
+  for (int m = 0; m < 4; ++m) {
+    const int l = (m >> 1) + 2 * (m & 1);
+    point[l] = __builtin_shufflevector(u[m], u[m + 4], 0, 1, 2, 3, 8, 9, 10, 11);
+    point[l + 4] = __builtin_shufflevector(u[m], u[m + 4], 4, 5, 6, 7, 12, 13, 14, 15);
+  }
+  if (stream && count == 8) {
+    stream_block(out, point);
+    return;
+  }
+  for (int l = 0; l < count; ++l)
+    std::memcpy(static_cast<void*>(&out[l]), &point[l], sizeof(StencilWeights));
+}
+
+}  // namespace sim
