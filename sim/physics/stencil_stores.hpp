@@ -1,7 +1,7 @@
 // How locate stores eight points' stencils (locate.cpp): a transposition in
-// registers, then each point's 56 bytes as one vector, or, for an array
-// larger than the last-level cache, the block's seven whole cache lines with
-// streaming stores (world.hpp, kStreamStencilsFrom).
+// registers, then each point's 56 bytes as one vector, or, in a scene too
+// big for the cache, the block's seven whole cache lines with streaming
+// stores (world.hpp, kMemoryBoundFrom).
 #pragma once
 
 #include <cstring>

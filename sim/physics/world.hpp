@@ -69,15 +69,19 @@ struct CacheLineAligned {
 };
 using StencilArray = std::vector<StencilWeights, CacheLineAligned<StencilWeights>>;
 
-// A stencil array larger than the last-level cache is written with streaming
-// stores, which do not first read each line they fill; below it, ordinary
-// stores leave the stencils in cache for the phases that read them next.
+// From this many points on, a step's arrays (about 225 bytes a point) are
+// well past this machine's 260 MB last-level cache, and the phases that wait
+// for memory touch it otherwise: locate writes the stencils with streaming
+// stores, which do not first read each line they fill (stencil_stores.hpp),
+// and P2G asks for each stencil ahead of its use (bands.hpp). Below it,
+// ordinary stores leave the stencils in cache for the phases that read them
+// next. For the streaming stores:
 // `bench/phases REFINE N --threads 2 --whole-step`, six 2-thread runs each,
 // in turns, streaming against ordinary stores (issue 17, thirty-second pass):
 // 6,552,200 points 34.2-39.3 against 35.8-41.1 ns a point-step; 1,638,050
 // and 920,000 points no difference beyond the runs' spread; 409,965 points
 // 31.9-37.3 against 28.0-29.8, and 25,538 points 34.0-45.1 against 30.7-37.7.
-constexpr long kStreamStencilsFrom = 2'000'000;
+constexpr long kMemoryBoundFrom = 2'000'000;
 
 struct World {
   Particles points;
@@ -93,9 +97,10 @@ struct World {
 
   // Scratch, rebuilt every step.
   StencilArray weights;  // per point: its stencil's S_ip and base node
-  // From this many points on, locate streams the stencils to memory
-  // (locate.cpp); tests lower it to compare the two ways of storing them.
-  long stream_stencils_from = kStreamStencilsFrom;
+  // From this many points on, locate streams the stencils to memory and P2G
+  // fetches them ahead (kMemoryBoundFrom); tests lower it to compare the two
+  // ways.
+  long memory_bound_from = kMemoryBoundFrom;
   std::vector<int> bin_key;       // per point: the bin of its stencil's base node
   std::vector<int> order;         // points sorted by their stencil's base node
   std::vector<int> band_start;    // order[band_start[b] .. band_start[b+1]) is band b

@@ -91,7 +91,7 @@ TEST(Transfer, RowSpansAreTheWindowWithFrictionWallsOrApic) {
   }
 }
 
-// Locate writes the stencils of a scene of kStreamStencilsFrom points or
+// Locate writes the stencils of a scene of kMemoryBoundFrom points or
 // more as whole cache lines with streaming stores (sim/physics/
 // stencil_stores.hpp). Lowered to 0, the same scene must get the same
 // stencils, bit for bit, and step to the same points: 140 points, so that
@@ -107,7 +107,7 @@ TEST(Transfer, StreamedStencilsAreTheStoredOnes) {
     stored.points.y[p] += u(rng);
   }
   sim::World streamed = stored;
-  streamed.stream_stencils_from = 0;
+  streamed.memory_bound_from = 0;
   sim::locate_points(stored);
   sim::locate_points(streamed);
   EXPECT_EQ(reinterpret_cast<std::uintptr_t>(streamed.weights.data()) % 64, 0u);
