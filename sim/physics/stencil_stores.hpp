@@ -36,7 +36,7 @@ inline void stream_block(StencilWeights* out, const Lane8 point[8]) {
 // point's 56 bytes one vector, stored at once, where going through a buffer
 // on the stack cost six loads and stores a point.
 inline void store_stencils(StencilWeights* out, int count, const Lane8 w[6], const Int8& base_i,
-                    const Int8& base_j, bool stream) {
+                           const Int8& base_j, bool stream) {
   static_assert(sizeof(StencilWeights) == 7 * sizeof(double), "six weights, two ints");
   // The base nodes as StencilWeights lays them out: base_i in the low half
   // of the eighth word, base_j in the high half.

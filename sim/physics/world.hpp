@@ -51,7 +51,7 @@ struct alignas(64) ThreadPace {
 };
 
 // Memory on 64-byte boundaries: locate can write a block of eight stencils
-// as seven whole cache lines (locate.cpp).
+// as seven whole cache lines (stencil_stores.hpp).
 template <class T>
 struct CacheLineAligned {
   using value_type = T;

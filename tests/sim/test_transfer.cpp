@@ -91,11 +91,12 @@ TEST(Transfer, RowSpansAreTheWindowWithFrictionWallsOrApic) {
   }
 }
 
-// Locate writes the stencils of a scene of kMemoryBoundFrom points or
-// more as whole cache lines with streaming stores (sim/physics/
-// stencil_stores.hpp). Lowered to 0, the same scene must get the same
-// stencils, bit for bit, and step to the same points: 140 points, so that
-// the last block of eight is partial and stored point by point.
+// In a scene of kMemoryBoundFrom points or more, locate writes the stencils
+// as whole cache lines with streaming stores (sim/physics/stencil_stores.hpp)
+// and P2G fetches them ahead (bands.hpp). Lowered to 0, the same scene must
+// get the same stencils, bit for bit, and step to the same points: 140
+// points, so that the last block of eight is partial and stored point by
+// point.
 TEST(Transfer, StreamedStencilsAreTheStoredOnes) {
   const sim::Scenario s = simtest::block_scenario({1.0, 1.0}, {2.75, 2.25}, 0.25, 2, {0, 0}, {5, 4});
   sim::World stored = sim::make_world(s);
