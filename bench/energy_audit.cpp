@@ -47,7 +47,7 @@ void audit_step(const sim::World& w, const sim::StepInput& in, const std::vector
   const double dt = in.dt;
   for (int j = g.j_begin; j < g.j_end; ++j) {
     // The row's span: the step leaves the air outside it as it was.
-    const int* span = &g.row_span[2 * (j - g.j_begin)];
+    const int* span = g.span_of_row(j);
     for (int i = span[0]; i < span[1]; ++i) {
       const int k = g.node(i, j);
       const double m = g.mass[k];

@@ -335,7 +335,7 @@ void scatter_band_in_runs(World& w, int band, double* const (&arrays)[N], Add ad
   const int end = w.band_start[band + 1];
   int s = w.band_start[band];
   int base = s < end ? base_of(w.order[s]) : -1;
-  const bool ahead = static_cast<long>(w.points.size()) >= w.memory_bound_from;
+  const bool ahead = memory_bound(w);
   Lane4 rows[N][3];
   const auto each_row = [&](auto visit) {
     for (int k = 0; k < N; ++k)

@@ -76,6 +76,9 @@ struct Grid {
   int stride = 0;
 
   int node(int i, int j) const { return j * stride + i; }
+  // Row j's span: [span_of_row(j)[0], span_of_row(j)[1]) along i.
+  const int* span_of_row(int j) const { return &row_span[2 * (j - j_begin)]; }
+  int* span_of_row(int j) { return &row_span[2 * (j - j_begin)]; }
   // Whether a stencil with base node (i, j) reaches a node a wall acts on.
   bool reaches_walls(int i, int j) const {
     return i < quiet_i_begin || i + 3 > quiet_i_end || j < quiet_j_begin || j + 3 > quiet_j_end;

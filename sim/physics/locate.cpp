@@ -76,7 +76,7 @@ void compute_stencils(World& w, int first_block, int end_block, int* counts, int
   // The window's bounds lane by lane, reduced over the lanes at the end.
   Int8 i_lo = Int8{} + g.nx, i_hi = Int8{} - 1, j_lo = Int8{} + g.ny, j_hi = Int8{} - 1;
   int bad = n, off_bins = 0;
-  const bool stream = n >= w.memory_bound_from;
+  const bool stream = memory_bound(w);
   for (int blk = first_block; blk < end_block; ++blk) {
     const int first = 8 * blk, count = std::min(8, n - first);
     Lane8 x, y;

@@ -73,7 +73,7 @@ void set_row_spans(World& w, int first, int last) {
       lo = std::min(lo, base[0]);
       hi = std::max(hi, base[1]);
     }
-    int* span = &g.row_span[2 * r];
+    int* span = g.span_of_row(j);
     span[0] = all ? g.i_begin : lo;
     span[1] = all ? g.i_end : std::max(lo, hi + 3);
   }
@@ -88,7 +88,7 @@ void reset_grid(World& w) {
   own_rows(w, first, last);
   set_row_spans(w, first, last);
   for (int j = first; j < last; ++j) {
-    const int* span = &g.row_span[2 * (j - g.j_begin)];
+    const int* span = g.span_of_row(j);
     for (int k = g.node(span[0], j); k < g.node(span[1], j); ++k)
       g.mass[k] = g.px[k] = g.py[k] = g.fx[k] = g.fy[k] = 0.0;
   }
@@ -165,7 +165,7 @@ M held(const NodeArray<std::uint8_t>& fix, int k) {
 // Row j's span, eight nodes at a time while eight remain, then one by one.
 template <class Eight, class One>
 void along_row(const Grid& g, int j, Eight eight, One one) {
-  const int* span = &g.row_span[2 * (j - g.j_begin)];
+  const int* span = g.span_of_row(j);
   int k = g.node(span[0], j);
   const int end = g.node(span[1], j);
   for (; k + 8 <= end; k += 8) eight(k);

@@ -127,6 +127,12 @@ struct World {
   std::vector<int> sort_scratch_ints;
 };
 
+// Whether the world's points are past kMemoryBoundFrom: locate then streams
+// the stencils and P2G fetches them ahead.
+inline bool memory_bound(const World& w) {
+  return static_cast<long>(w.points.size()) >= w.memory_bound_from;
+}
+
 // Visits every per-point array of the world that is in use (APIC's and the
 // per-point strengths are empty in scenes without them), for whatever must
 // reach them all: the sort into cell order (point_order.cpp), the count of

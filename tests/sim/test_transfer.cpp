@@ -52,7 +52,7 @@ TEST(Transfer, RowSpansHoldEveryNodeAPointWeights) {
   sim::locate_points(w);
   sim::reset_grid(w);
   const sim::Grid& g = w.grid;
-  const auto span = [&](int j) { return &g.row_span[2 * (j - g.j_begin)]; };
+  const auto span = [&](int j) { return g.span_of_row(j); };
   int narrower = 0;
   for (int j = g.j_begin; j < g.j_end; ++j)
     narrower += span(j)[0] > g.i_begin || span(j)[1] < g.i_end;
@@ -85,8 +85,8 @@ TEST(Transfer, RowSpansAreTheWindowWithFrictionWallsOrApic) {
     sim::reset_grid(w);
     const sim::Grid& g = w.grid;
     for (int j = g.j_begin; j < g.j_end; ++j) {
-      EXPECT_EQ(g.row_span[2 * (j - g.j_begin)], g.i_begin) << (apic ? "APIC" : "friction") << ", row " << j;
-      EXPECT_EQ(g.row_span[2 * (j - g.j_begin) + 1], g.i_end) << (apic ? "APIC" : "friction") << ", row " << j;
+      EXPECT_EQ(g.span_of_row(j)[0], g.i_begin) << (apic ? "APIC" : "friction") << ", row " << j;
+      EXPECT_EQ(g.span_of_row(j)[1], g.i_end) << (apic ? "APIC" : "friction") << ", row " << j;
     }
   }
 }
