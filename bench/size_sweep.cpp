@@ -99,7 +99,8 @@ double timed_run(const Row& row, int threads, long steps) {
   return timed_steps(world, row.input, threads, steps);
 }
 
-// A child process that spins on one core until killed (--busy).
+}  // namespace
+
 pid_t start_busy_loop() {
   const pid_t pid = fork();
   if (pid == 0) {
@@ -108,8 +109,6 @@ pid_t start_busy_loop() {
   }
   return pid;
 }
-
-}  // namespace
 
 int size_sweep_rss_child(int refine) {
   if (refine > 0) {

@@ -3,11 +3,17 @@
 // STREAM-like triad measured in the same run.
 #pragma once
 
+#include <sys/types.h>
+
 namespace bench {
 
 // argv after "--sizes"; returns the exit status.
 int size_sweep(int argc, char** argv);
 // The child of one row's peak-RSS measurement: prints its VmHWM in bytes.
 int size_sweep_rss_child(int refine);
+// A child process that spins on one core until killed (--busy, --busy-start).
+pid_t start_busy_loop();
+// argv after "--busy-start" (bench/busy_start.cpp); returns the exit status.
+int busy_start(int argc, char** argv);
 
 }  // namespace bench

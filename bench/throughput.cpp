@@ -18,6 +18,8 @@
 // contains it)
 //        throughput --sizes [STEPS] [--up-to POINTS] [--busy] [--exact-threads]
 // (issue 17's size sweep of the granular column, bench/size_sweep.cpp)
+//        throughput --busy-start [STEPS] [ROUNDS]
+// (a run's first steps beside a busy loop, bench/busy_start.cpp)
 #include <omp.h>
 #include <unistd.h>
 
@@ -91,6 +93,7 @@ double run(sim::Scenario s, int threads, int steps, std::size_t& points, double&
 
 int main(int argc, char** argv) {
   if (argc > 1 && std::string(argv[1]) == "--sizes") return bench::size_sweep(argc - 2, argv + 2);
+  if (argc > 1 && std::string(argv[1]) == "--busy-start") return bench::busy_start(argc - 2, argv + 2);
   if (argc > 2 && std::string(argv[1]) == "--sizes-rss-child")
     return bench::size_sweep_rss_child(std::atoi(argv[2]));
   const bool child = argc > 2 && std::string(argv[1]) == "--peak-rss-child";
