@@ -64,9 +64,12 @@ int free_cores() {
 }
 
 int settle_team(Team& team, int asked, int free) {
-  if (asked != team.asked) team.last_count = asked;  // no count before at this size
+  const bool first = asked != team.asked;  // no count before at this size
+  const int threads = first ? free : std::max(free, team.last_count);
+  // Counted again soon: a first count that found a core busy, for a
+  // short-lived process, and a busy core seen once, to confirm it.
+  team.check_soon = free < (first ? asked : threads);
   team.asked = asked;
-  const int threads = std::max(free, team.last_count);
   team.last_count = free;
   return threads;
 }
@@ -77,7 +80,7 @@ int team_size(Team& team) {
   const int asked = omp_get_max_threads();
   if (asked == 1 || !following) return asked;
   const auto now = std::chrono::steady_clock::now();
-  const auto wait = team.last_count < team.threads ? kConfirm : kRecount;
+  const auto wait = team.check_soon ? kConfirm : kRecount;
   if (asked != team.asked || now - team.counted >= wait) {
     team.threads = settle_team(team, asked, free_cores());
     team.counted = now;

@@ -61,13 +61,20 @@ TEST(Team, GivesUpACoreOnlyToTwoCountsInARow) {
 }
 
 // The first count after the threads asked for change has no count before:
-// a busy core then waits for the next count too.
-TEST(Team, FirstCountIsSettledWithTheThreadsAsked) {
+// it is taken as it is, and counted again soon where it found a core busy,
+// so that a short-lived process costs a thread only until then.
+TEST(Team, FirstCountIsTakenAsItIs) {
   sim::Team team;
-  EXPECT_EQ(sim::settle_team(team, 2, 1), 2) << "the first count of a busy core";
-  EXPECT_EQ(sim::settle_team(team, 2, 1), 1) << "the second";
-  EXPECT_EQ(sim::settle_team(team, 3, 1), 3) << "the first count at another size";
-  EXPECT_EQ(sim::settle_team(team, 3, 2), 2) << "two counts below 3 in a row";
+  EXPECT_EQ(sim::settle_team(team, 2, 1), 1) << "the first count of a busy core";
+  EXPECT_TRUE(team.check_soon) << "a first count short of the threads asked is checked soon";
+  EXPECT_EQ(sim::settle_team(team, 2, 2), 2) << "free at the next count: a short-lived process";
+  EXPECT_FALSE(team.check_soon);
+  EXPECT_EQ(sim::settle_team(team, 3, 1), 1) << "the first count at another size";
+  EXPECT_EQ(sim::settle_team(team, 3, 1), 1) << "confirmed";
+  EXPECT_FALSE(team.check_soon) << "a confirmed count waits kRecount";
+  EXPECT_EQ(sim::settle_team(team, 3, 3), 3) << "the cores free again";
+  EXPECT_EQ(sim::settle_team(team, 3, 2), 3) << "one count of a busy core";
+  EXPECT_TRUE(team.check_soon) << "is confirmed soon";
 }
 
 TEST(Team, FixedWhenNotFollowingFreeCores) {
