@@ -11,6 +11,13 @@
 
 namespace sim {
 
+// Points [0, count) of a block, point[l] holding point l's seven words in
+// lanes 0-6, each stored as one 56-byte copy.
+inline void store_points(StencilWeights* out, int count, const Lane8 point[8]) {
+  for (int l = 0; l < count; ++l)
+    std::memcpy(static_cast<void*>(&out[l]), &point[l], sizeof(StencilWeights));
+}
+
 // Eight points' stencils, point[l] holding point l's seven words in lanes
 // 0-6, written as the block's seven whole cache lines (8 x 56 B = 7 x 64 B)
 // with streaming stores, which write a line without first reading it.
@@ -27,7 +34,7 @@ inline void stream_block(StencilWeights* out, const Lane8 point[8]) {
   _mm512_stream_pd(line + 40, __builtin_shufflevector(point[5], point[6], 5, 6, 8, 9, 10, 11, 12, 13));
   _mm512_stream_pd(line + 48, __builtin_shufflevector(point[6], point[7], 6, 8, 9, 10, 11, 12, 13, 14));
 #else
-  for (int l = 0; l < 8; ++l) std::memcpy(static_cast<void*>(&out[l]), &point[l], sizeof(StencilWeights));
+  store_points(out, 8, point);
 #endif
 }
 
@@ -60,12 +67,10 @@ inline void store_stencils(StencilWeights* out, int count, const Lane8 w[6], con
     point[l] = __builtin_shufflevector(u[m], u[m + 4], 0, 1, 2, 3, 8, 9, 10, 11);
     point[l + 4] = __builtin_shufflevector(u[m], u[m + 4], 4, 5, 6, 7, 12, 13, 14, 15);
   }
-  if (stream && count == 8) {
+  if (stream && count == 8)
     stream_block(out, point);
-    return;
-  }
-  for (int l = 0; l < count; ++l)
-    std::memcpy(static_cast<void*>(&out[l]), &point[l], sizeof(StencilWeights));
+  else
+    store_points(out, count, point);
 }
 
 }  // namespace sim
