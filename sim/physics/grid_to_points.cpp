@@ -139,9 +139,11 @@ __attribute__((always_inline)) inline void update_eight(const World& w, const Po
   const Lane8 kx = ux * keep, ky = uy * keep;  // damping of the gravity stage
   const Lane8 m = lanes_at<Lane8>(a.mass, q, run);
   const Lane8 v2 = kx * kx + ky * ky;
-  const Lane8 gravity_terms = m * (in.gravity[0] * dx + in.gravity[1] * dy);
-  const Lane8 kinetic_terms = 0.5 * m * v2, moving_terms = 0.5 * m * (vx * vx + vy * vy);
-  const Lane8 damped_terms = 0.5 * m * (ux * ux + uy * uy - v2);
+  alignas(64) double gravity_terms[8], kinetic_terms[8], moving_terms[8], damped_terms[8];
+  put_lanes(gravity_terms, m * (in.gravity[0] * dx + in.gravity[1] * dy));
+  put_lanes(kinetic_terms, 0.5 * m * v2);
+  put_lanes(moving_terms, 0.5 * m * (vx * vx + vy * vy));
+  put_lanes(damped_terms, 0.5 * m * (ux * ux + uy * uy - v2));
   store_lanes(a.x, q, count, run, lanes_at<Lane8>(a.x, q, run) + dx);
   store_lanes(a.y, q, count, run, lanes_at<Lane8>(a.y, q, run) + dy);
   store_lanes(a.vx, q, count, run, kx);

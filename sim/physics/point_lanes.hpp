@@ -51,6 +51,12 @@ void store_lanes(T* a, const int q[8], int count, bool run, const V& v) {
   for (int l = 0; l < count; ++l) a[q[l]] = v[l];
 }
 
+// The lanes of v as an array, for a loop that takes them a point at a time:
+// a Lane8 read at a lane that changes from point to point was compiled to a
+// store of the whole vector to the stack at every point, and a load (issue
+// 17, thirty-third pass: eight such stores a point in the stress phase).
+inline void put_lanes(double (&to)[8], const Lane8& v) { std::memcpy(to, &v, sizeof to); }
+
 // Four quantities a, b, c, d of eight points, one point a lane, from the
 // sums of the pairs (0, 1), (2, 3), (4, 5), (6, 7), each pair's as
 // {a_0, a_1, b_0, b_1, c_0, c_1, d_0, d_1}: out = {a, b, c, d}.

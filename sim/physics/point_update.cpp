@@ -90,12 +90,17 @@ Lane8 velocity_gradients(const World& w, int p, int q, const SlopeLanes& d) {
   return sum3_of_halves(lxx, lxy, lyx, lyy);
 }
 
-// What the force scatter needs of eight points just updated, one lane each,
-// handed over in registers: their new stress, their volume after Eq. (25)
-// and their mass, so the scatter reloads nothing and divides nothing.
+// What the force scatter needs of eight points just updated, one lane each:
+// their new stress, their volume after Eq. (25), their mass and their
+// stencils' y derivatives, so the scatter reloads nothing and divides
+// nothing. The scatter takes them a point at a time, so they are handed over
+// as arrays, written once a group: held as vectors, each point's reads of
+// its lanes were compiled to stores of the whole vectors to the stack and a
+// load, eight vector stores a point (issue 17, thirty-third pass).
 struct UpdatedLanes {
-  Lane8 sxx, syy, sxy, volume, mass;
-  Lane8 work;  // each point's stress work over the step (Eq. 3)
+  alignas(64) double sxx[8], syy[8], sxy[8], volume[8], mass[8];
+  alignas(64) double work[8];  // each point's stress work over the step (Eq. 3)
+  alignas(64) double dy[3][8];
   SlopeLanes slopes;
 };
 
@@ -151,19 +156,20 @@ void update_eight_stresses(World& w, const int* p, int count, double dt, const S
   // (Dunatunga & Kamrin 2015): it counts as yielded, flowing freely.
   yielded = disconnect_below_critical_density(rho_after, m, s) ? Int8{} + 1 : yielded;
   // Stress power of Eq. (3) over the step, midpoint stress.
-  out.work = volume * 0.5 * ((before.xx + s.xx) * de.xx + (before.yy + s.yy) * de.yy +
-                             2.0 * (before.xy + s.xy) * de.xy);
+  put_lanes(out.work, volume * 0.5 * ((before.xx + s.xx) * de.xx + (before.yy + s.yy) * de.yy +
+                                      2.0 * (before.xy + s.xy) * de.xy));
   store_lanes(pts.sxx.data(), q, count, run, s.xx);
   store_lanes(pts.syy.data(), q, count, run, s.yy);
   store_lanes(pts.sxy.data(), q, count, run, s.xy);
   store_lanes(pts.szz.data(), q, count, run, s.zz);
   store_lanes(pts.density.data(), q, count, run, rho_after);
   store_lanes(pts.yielded.data(), q, count, run, __builtin_convertvector(yielded, Bytes8));
-  out.sxx = s.xx;
-  out.syy = s.yy;
-  out.sxy = s.xy;
-  out.volume = m_p / rho_after;  // Particles::volume, lane by lane
-  out.mass = m_p;
+  put_lanes(out.sxx, s.xx);
+  put_lanes(out.syy, s.yy);
+  put_lanes(out.sxy, s.xy);
+  put_lanes(out.volume, m_p / rho_after);  // Particles::volume, lane by lane
+  put_lanes(out.mass, m_p);
+  for (int b = 0; b < 3; ++b) put_lanes(out.dy[b], out.slopes.dy[b]);
 }
 
 // Adds the internal and body forces of point p, lane l of `u`, to its nodes,
@@ -183,7 +189,7 @@ void scatter_point_force(World& w, int p, const UpdatedLanes& u, int l, const Ve
   sums.hold(w.grid.node(st.base_i, st.base_j));
   for (int b = 0; b < 3; ++b) {
     const Lane8 S = wx * st.wy[b];
-    const Lane8 gx = dx * st.wy[b], gy = wx * u.slopes.dy[b][l];  // grad S_ip
+    const Lane8 gx = dx * st.wy[b], gy = wx * u.dy[b][l];  // grad S_ip
     const Lane8 stress_on_slope = fused(first, gx, second * gy);  // sigma_p . grad S_ip
     // f_int = -sigma_p . grad S_ip V_p, Eq. (16); f_ext = m_p b S_ip, Eq. (17).
     sums.rows[b] = fused(stress_on_slope, -V, fused(S, mg, sums.rows[b]));
