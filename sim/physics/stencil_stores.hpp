@@ -12,10 +12,19 @@
 namespace sim {
 
 // Points [0, count) of a block, point[l] holding point l's seven words in
-// lanes 0-6, each stored as one 56-byte copy.
+// lanes 0-6, each stored from its register with a store of seven lanes where
+// the build has AVX-512. The lanes are taken by a constant index: copied by
+// a loop to count, the eight vectors went to the stack first and then each
+// point's 56 bytes were loaded and stored again as two overlapping halves
+// (issue 17, thirty-third pass, objdump of locate).
 inline void store_points(StencilWeights* out, int count, const Lane8 point[8]) {
+#if defined(__AVX512F__)
+  for (int l = 0; l < 8; ++l)
+    if (l < count) _mm512_mask_storeu_pd(reinterpret_cast<double*>(&out[l]), 0x7f, point[l]);
+#else
   for (int l = 0; l < count; ++l)
     std::memcpy(static_cast<void*>(&out[l]), &point[l], sizeof(StencilWeights));
+#endif
 }
 
 // Eight points' stencils, point[l] holding point l's seven words in lanes
