@@ -48,7 +48,9 @@ void store_lanes(T* a, const int q[8], int count, bool run, const V& v) {
     std::memcpy(a + q[0], &v, sizeof v);
     return;
   }
-  for (int l = 0; l < count; ++l) a[q[l]] = v[l];
+  T lanes[8];  // see put_lanes below
+  std::memcpy(lanes, &v, sizeof lanes);
+  for (int l = 0; l < count; ++l) a[q[l]] = lanes[l];
 }
 
 // The lanes of v as an array, for a loop that takes them a point at a time:
