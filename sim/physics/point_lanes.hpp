@@ -28,6 +28,17 @@ inline bool stored_in_a_run(const int q[8], int count) {
   return true;
 }
 
+// The lanes of v (a Lane8 or Bytes8) as an array, for a loop that takes
+// them a point at a time: a vector read at a lane that changes from point to
+// point was compiled to a store of the whole vector to the stack at every
+// point, and a load (issue 17, thirty-third pass: eight such stores a point
+// in the stress phase).
+template <class T, class V>
+void put_lanes(T (&to)[8], const V& v) {
+  static_assert(sizeof(V) == sizeof to, "eight lanes of T");
+  std::memcpy(to, &v, sizeof to);
+}
+
 // The values of eight points in array `a`, one a lane (V: Lane8 of doubles,
 // Bytes8 of bytes), and their store back, count lanes.
 template <class V, class T>
@@ -48,16 +59,10 @@ void store_lanes(T* a, const int q[8], int count, bool run, const V& v) {
     std::memcpy(a + q[0], &v, sizeof v);
     return;
   }
-  T lanes[8];  // see put_lanes below
-  std::memcpy(lanes, &v, sizeof lanes);
+  T lanes[8];
+  put_lanes(lanes, v);
   for (int l = 0; l < count; ++l) a[q[l]] = lanes[l];
 }
-
-// The lanes of v as an array, for a loop that takes them a point at a time:
-// a Lane8 read at a lane that changes from point to point was compiled to a
-// store of the whole vector to the stack at every point, and a load (issue
-// 17, thirty-third pass: eight such stores a point in the stress phase).
-inline void put_lanes(double (&to)[8], const Lane8& v) { std::memcpy(to, &v, sizeof to); }
 
 // Four quantities a, b, c, d of eight points, one point a lane, from the
 // sums of the pairs (0, 1), (2, 3), (4, 5), (6, 7), each pair's as

@@ -28,7 +28,8 @@
 // beside a busy loop took its first kConfirm on two threads, one of them
 // waiting for the core the loop held, and OpenMP's idle worker then spun
 // for its block time beside both: the first 200 steps of the 25 k-point
-// column took 30 ms more than on one thread (bench/README.md).
+// column took 7.7 to 26.4 ms more than on one thread, and about as long
+// after (throughput --busy-start, bench/README.md).
 #pragma once
 
 #include <chrono>
