@@ -63,6 +63,17 @@ int* counts_of(World& w, int t) {
   return w.thread_counts.data() + static_cast<std::size_t>(t) * w.bins;
 }
 
+// Eight points' bins, all inside the grid and on the bins (nearly every
+// group): their keys in one store and their counts without a branch. The
+// lane-by-lane loop in compute_stencils tests each point for both, and perf
+// put 9 % of locate on it.
+void count_eight(const Int8& bin, int* keys, int* counts) {
+  typedef int Int8x32 __attribute__((vector_size(32)));
+  const Int8x32 narrow = __builtin_convertvector(bin, Int8x32);
+  std::memcpy(keys, &narrow, sizeof narrow);
+  for (int l = 0; l < 8; ++l) ++counts[narrow[l]];
+}
+
 // Stencils of the points of Lane8 blocks [first_block, end_block), eight
 // points at a time (gimp.hpp; the last block repeats its last point where the
 // points run out), each point counted in its bin (`counts`, the thread's,
@@ -102,17 +113,21 @@ void compute_stencils(World& w, int first_block, int end_block, int* counts, int
                         (base_i + 2 < g.nx) & (base_j + 2 < g.ny);
     // Bins of the points inside only (the others' base nodes may be anything).
     const Int8 bin = bin_of(w, inside & base_i, inside & base_j);
-    for (int l = 0; l < count; ++l) {
-      if (!inside[l]) {
-        bad = std::min(bad, scene_index_of(w, first + l));
-        continue;
+    if (count == 8 && every(inside & (bin >= 0))) {
+      count_eight(bin, &w.bin_key[first], counts);
+    } else {
+      for (int l = 0; l < count; ++l) {
+        if (!inside[l]) {
+          bad = std::min(bad, scene_index_of(w, first + l));
+          continue;
+        }
+        if (bin[l] < 0) {
+          ++off_bins;
+          continue;
+        }
+        w.bin_key[first + l] = static_cast<int>(bin[l]);
+        ++counts[bin[l]];
       }
-      if (bin[l] < 0) {
-        ++off_bins;
-        continue;
-      }
-      w.bin_key[first + l] = static_cast<int>(bin[l]);
-      ++counts[bin[l]];
     }
     // Points off the grid stay out of the window.
     i_lo = (inside & (base_i < i_lo)) ? base_i : i_lo;
