@@ -28,14 +28,17 @@ class SimulationError : public std::runtime_error {
 };
 
 // The last mark a band took (sim/physics/bands.hpp: a scatter or the nodal
-// update finished), as that mark's epoch. A copied or assigned World starts
-// with none: its step count may be behind the marks the band had.
+// update finished), as that mark's epoch, and the last step whose G2P a
+// thread took the band for (gather_own_bands). A copied or assigned World
+// starts with neither: its step count may be behind the band's.
 struct BandDone {
   std::atomic<long> epoch{0};
+  std::atomic<long> taken{0};
   BandDone() = default;
   BandDone(const BandDone&) {}
   BandDone& operator=(const BandDone&) {
     epoch.store(0, std::memory_order_relaxed);
+    taken.store(0, std::memory_order_relaxed);
     return *this;
   }
 };

@@ -235,3 +235,33 @@ TEST(Bands, SplitFollowsTheThreadsPace) {
   for (const sim::ThreadPace& p : w.thread_pace) EXPECT_EQ(p.per_point, 0.0);
   EXPECT_EQ(w.thread_pace[0].points + w.thread_pace[1].points + w.thread_pace[2].points, 400);
 }
+
+// A thread done with its own bands takes the others' G2P bands from the top
+// of their ranges down, below each range's highest (which waits for the
+// thread above), and each band is visited once. Thread 0 holds its first
+// band until thread 1 has left the phase, so what thread 1 takes is fixed.
+TEST(Bands, GatherSharesTheBandsOfAThreadBehind) {
+  sim::World w = banded_world({0, 6, 9});
+  std::vector<std::atomic<int>> visits(9), visitor(9);
+  std::atomic<bool> holding{false}, left{false};
+  const bool two = on_two_threads([&](int t) {
+    sim::mark_own_bands(w, sim::BandMark::NodalUpdate);
+    if (t == 1)
+      while (!holding) sim::spin_pause();
+    sim::gather_own_bands(w, [&](int b) {
+      ++visits[b];
+      visitor[b] = t;
+      if (b == 0 && t == 0 && omp_get_num_threads() == 2) {
+        holding = true;
+        while (!left) sim::spin_pause();
+      }
+    });
+    if (t == 1) left = true;
+  });
+  if (!two) GTEST_SKIP() << "no team of 2 threads";
+  const int expected[9] = {0, 1, 1, 1, 1, 0, 1, 1, 1};
+  for (int b = 0; b < 9; ++b) {
+    EXPECT_EQ(visits[b], 1) << "band " << b;
+    EXPECT_EQ(visitor[b], expected[b]) << "band " << b;
+  }
+}
