@@ -8,7 +8,8 @@
 // phases that handed points out in other ways (chunks of the point index,
 // bands on demand) the two cores of this machine spent their time passing
 // cache lines back and forth, and 2 threads ran 1.2 to 1.5 times as fast as
-// one instead of 1.8 to 1.9 times (bench/README.md).
+// one instead of 1.8 to 1.9 times (bench/README.md). Only the end of the last
+// phase, G2P, is shared out on demand (gather_own_bands).
 //
 // Results never depend on the partition: a node's sums are taken band by
 // band in a fixed order (even bands, then odd), and every reduction is summed
@@ -52,7 +53,7 @@ inline long parity_points(const World& w, int first, int end, int parity) {
 // one, a step took 1.4 times as long per point as on the other
 // (bench/README.md), and a split by equal points then leaves the faster
 // thread waiting at every barrier. So each thread times its work in every
-// phase the split shares out, less its waits for marks (WorkClock), and the
+// phase the split shares out but G2P, less its waits for marks (WorkClock), and the
 // next split gives it points in inverse proportion to its seconds per point.
 // The grid rows count though they are not points: a thread that holds the
 // air above a slope takes fewer points. The pace is smoothed over about
