@@ -17,11 +17,8 @@
 #include <cstdlib>
 #include <vector>
 
-#include "bench/granular_column.hpp"
 #include "bench/size_sweep.hpp"
-#include "sim/physics/point_order.hpp"
 #include "sim/physics/step.hpp"
-#include "sim/scene/seed.hpp"
 
 namespace bench {
 
@@ -53,15 +50,10 @@ int busy_start(int argc, char** argv) {
     std::fprintf(stderr, "throughput --busy-start: expected [STEPS >= 1] [ROUNDS >= 1]\n");
     return 2;
   }
-  const sim::Scenario s = granular_column(1);
-  sim::World world = sim::make_world(s);
-  sim::StepInput input;
-  input.dt = s.time_step.courant * s.cell_size / sim::max_signal_speed(world);
-  input.gravity = s.gravity;
-  sim::StepReport report;
-  omp_set_num_threads(1);
-  for (int k = 0; k < 2; ++k) sim::step(world, input, report);  // sizes the scratch
-  sim::sort_points_by_cell(world);
+  Row row = make_row(1);
+  warm_up(row);
+  const sim::World& world = row.world;
+  const sim::StepInput& input = row.input;
   const pid_t busy = start_busy_loop();
   std::printf("first %d steps of the granular column (%zu points) from a fresh team, a busy "
               "loop (pid %d) beside, %d rounds in turns:\n",

@@ -61,19 +61,6 @@ double triad_bandwidth(int threads) {
   return best;
 }
 
-struct Row {
-  sim::World world;
-  sim::StepInput input;
-};
-
-Row make_row(int refine) {
-  const sim::Scenario s = granular_column(refine);
-  Row row{sim::make_world(s), {}};
-  row.input.dt = s.time_step.courant * s.cell_size / sim::max_signal_speed(row.world);
-  row.input.gravity = s.gravity;
-  return row;
-}
-
 // Point-steps per second of `steps` steps on `threads` threads.
 double timed_steps(sim::World& world, const sim::StepInput& input, int threads, long steps) {
   omp_set_num_threads(threads);
@@ -86,12 +73,6 @@ double timed_steps(sim::World& world, const sim::StepInput& input, int threads, 
   return steps * static_cast<double>(world.points.size()) / seconds_since(start);
 }
 
-// Two untimed steps that size the scratch arrays, and the time loop's first
-// sort into cell order (sim/physics/point_order.hpp), which sizes its own.
-void warm_up(Row& row) {
-  timed_steps(row.world, row.input, 1, 2);
-  sim::sort_points_by_cell(row.world);
-}
 
 // The same, on a copy of the row's world.
 double timed_run(const Row& row, int threads, long steps) {
@@ -100,6 +81,19 @@ double timed_run(const Row& row, int threads, long steps) {
 }
 
 }  // namespace
+
+Row make_row(int refine) {
+  const sim::Scenario s = granular_column(refine);
+  Row row{sim::make_world(s), {}};
+  row.input.dt = s.time_step.courant * s.cell_size / sim::max_signal_speed(row.world);
+  row.input.gravity = s.gravity;
+  return row;
+}
+
+void warm_up(Row& row) {
+  timed_steps(row.world, row.input, 1, 2);
+  sim::sort_points_by_cell(row.world);
+}
 
 pid_t start_busy_loop() {
   const pid_t pid = fork();

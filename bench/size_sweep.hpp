@@ -5,7 +5,21 @@
 
 #include <sys/types.h>
 
+#include "sim/physics/step.hpp"
+
 namespace bench {
+
+// One row of the sweep: the granular column at `refine` (granular_column.hpp)
+// and its step input, the time step the Courant number gives at rest.
+struct Row {
+  sim::World world;
+  sim::StepInput input;
+};
+Row make_row(int refine);
+// Two untimed steps on one thread that size the scratch arrays, and the time
+// loop's first sort into cell order (sim/physics/point_order.hpp), which sizes
+// its own.
+void warm_up(Row& row);
 
 // argv after "--sizes"; returns the exit status.
 int size_sweep(int argc, char** argv);
