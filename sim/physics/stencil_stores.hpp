@@ -17,13 +17,36 @@ namespace sim {
 // a loop to count, the eight vectors went to the stack first and then each
 // point's 56 bytes were loaded and stored again as two overlapping halves
 // (issue 17, thirty-third pass, objdump of locate).
+//
+// With AVX alone, as three stores of 4, 2 and 1 lanes from the register's
+// halves: a copy by memcpy went through the stack the same way.
 inline void store_points(StencilWeights* out, int count, const Lane8 point[8]) {
+  for (int l = 0; l < 8; ++l) {
+    if (l >= count) return;
+    double* const to = reinterpret_cast<double*>(&out[l]);
 #if defined(__AVX512F__)
-  for (int l = 0; l < 8; ++l)
-    if (l < count) _mm512_mask_storeu_pd(reinterpret_cast<double*>(&out[l]), 0x7f, point[l]);
+    _mm512_mask_storeu_pd(to, 0x7f, point[l]);
+#elif defined(__AVX__)
+    const __m256d high = high4(point[l]);
+    _mm256_storeu_pd(to, low4(point[l]));
+    _mm_storeu_pd(to + 4, _mm256_castpd256_pd128(high));
+    _mm_store_sd(to + 6, _mm256_extractf128_pd(high, 1));
 #else
-  for (int l = 0; l < count; ++l)
-    std::memcpy(static_cast<void*>(&out[l]), &point[l], sizeof(StencilWeights));
+    std::memcpy(to, &point[l], sizeof(StencilWeights));
+#endif
+  }
+}
+
+// A whole 64-byte line, 64-byte aligned, written by a streaming store (two
+// of 32 bytes with AVX alone).
+inline void stream_line(double* line, const Lane8& v) {
+#if defined(__AVX512F__)
+  _mm512_stream_pd(line, v);
+#elif defined(__AVX__)
+  _mm256_stream_pd(line, low4(v));
+  _mm256_stream_pd(line + 4, high4(v));
+#else
+  std::memcpy(line, &v, sizeof v);
 #endif
 }
 
@@ -32,19 +55,15 @@ inline void store_points(StencilWeights* out, int count, const Lane8 point[8]) {
 // with streaming stores, which write a line without first reading it.
 inline void stream_block(StencilWeights* out, const Lane8 point[8]) {
   double* const line = reinterpret_cast<double*>(out);
-#if defined(__AVX512F__)
   // Line k holds words 8k..8k+7 of the block: the tail of point k from its
   // word k, then the head of point k + 1.
-  _mm512_stream_pd(line + 0, __builtin_shufflevector(point[0], point[1], 0, 1, 2, 3, 4, 5, 6, 8));
-  _mm512_stream_pd(line + 8, __builtin_shufflevector(point[1], point[2], 1, 2, 3, 4, 5, 6, 8, 9));
-  _mm512_stream_pd(line + 16, __builtin_shufflevector(point[2], point[3], 2, 3, 4, 5, 6, 8, 9, 10));
-  _mm512_stream_pd(line + 24, __builtin_shufflevector(point[3], point[4], 3, 4, 5, 6, 8, 9, 10, 11));
-  _mm512_stream_pd(line + 32, __builtin_shufflevector(point[4], point[5], 4, 5, 6, 8, 9, 10, 11, 12));
-  _mm512_stream_pd(line + 40, __builtin_shufflevector(point[5], point[6], 5, 6, 8, 9, 10, 11, 12, 13));
-  _mm512_stream_pd(line + 48, __builtin_shufflevector(point[6], point[7], 6, 8, 9, 10, 11, 12, 13, 14));
-#else
-  store_points(out, 8, point);
-#endif
+  stream_line(line + 0, __builtin_shufflevector(point[0], point[1], 0, 1, 2, 3, 4, 5, 6, 8));
+  stream_line(line + 8, __builtin_shufflevector(point[1], point[2], 1, 2, 3, 4, 5, 6, 8, 9));
+  stream_line(line + 16, __builtin_shufflevector(point[2], point[3], 2, 3, 4, 5, 6, 8, 9, 10));
+  stream_line(line + 24, __builtin_shufflevector(point[3], point[4], 3, 4, 5, 6, 8, 9, 10, 11));
+  stream_line(line + 32, __builtin_shufflevector(point[4], point[5], 4, 5, 6, 8, 9, 10, 11, 12));
+  stream_line(line + 40, __builtin_shufflevector(point[5], point[6], 5, 6, 8, 9, 10, 11, 12, 13));
+  stream_line(line + 48, __builtin_shufflevector(point[6], point[7], 6, 8, 9, 10, 11, 12, 13, 14));
 }
 
 // Eight points' stencils stored, lanes [0, count) of the six weight lanes
