@@ -109,7 +109,8 @@ inline Lane8 radius_above(const StressOf<Lane8>& s) {
 constexpr bool kRadiusEstimate = true;
 inline Lane8 radius_above(const StressOf<Lane8>& s) {
   const Lane8 q = squared_radius(s);
-  const __m256 r = _mm256_rsqrt_ps(_mm256_set_m128(_mm256_cvtpd_ps(high4(q)), _mm256_cvtpd_ps(low4(q))));
+  const __m256 r =
+      _mm256_rsqrt_ps(_mm256_set_m128(_mm256_cvtpd_ps(high4(q)), _mm256_cvtpd_ps(low4(q))));
   const Lane8 inverse = join4(_mm256_cvtps_pd(_mm256_castps256_ps128(r)),
                               _mm256_cvtps_pd(_mm256_extractf128_ps(r, 1)));
   const Lane8 estimate = q < 0x1p120 ? q * inverse * (1.0 + 0x1p-10) : Lane8{} + HUGE_VAL;
