@@ -6,6 +6,7 @@
 // trials a rounding away from the surface on either side.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstring>
 
 #include "sim/physics/mohr_coulomb_return.hpp"
@@ -143,3 +144,38 @@ TEST(MohrCoulombReturnLanes, TrialsAtTheSurfaceKeepTheirBits) {
 }
 
 }  // namespace
+
+// radius_above must bound the radius from above for every squared radius the
+// step can meet, or a group with one lane just outside would be kept as it
+// is: with AVX alone it goes through a float (mohr_coulomb_return.hpp), whose
+// range ends far inside the doubles'. Radii r from 2^-600 to 2^600 (q = r^2
+// below the floats' normal range, inside it, and past 2^120), with the
+// in-plane shear alone (q = xy^2) and the normal difference alone.
+TEST(MohrCoulombReturnLanes, RadiusEstimateBoundsTheRadius) {
+#if !defined(__AVX__)
+  GTEST_SKIP() << "no radius estimate in a build without AVX (mohr_coulomb_return.hpp)";
+#else
+  static_assert(sim::mc_return::kRadiusEstimate, "AVX builds estimate the radius");
+  long checked = 0;
+  for (int e = -600; e <= 600; ++e)
+    for (double m : {1.0, 1.0 + 0x1p-52, 1.2345678901234567, 1.5, 1.9999999999999998}) {
+      const double r = std::ldexp(m, e);
+      sim::StressOf<Lane8> s{};
+      for (int l = 0; l < 8; ++l) {
+        const double scale = 1.0 + l * 0x1p-20;
+        const bool shear = l % 2 == 0;
+        s.xx[l] = shear ? 0.0 : r * scale;
+        s.yy[l] = shear ? 0.0 : -r * scale;
+        s.xy[l] = shear ? r * scale : 0.0;
+      }
+      const Lane8 above = sim::mc_return::radius_above(s);
+      for (int l = 0; l < 8; ++l) {
+        sim::StressOf<double> one{s.xx[l], s.yy[l], s.xy[l], 0.0};
+        const double exact = sim::mc_return::circle_radius(one);
+        ASSERT_GE(above[l], exact) << "r = " << r << ", lane " << l;
+        ++checked;
+      }
+    }
+  EXPECT_EQ(checked, 1201 * 5 * 8);
+#endif
+}
