@@ -56,7 +56,6 @@ inline Lane8 floor_of(const Lane8& t) {
 // grid) the conversion gives INT_MIN, a negative index: off the grid.
 inline int to_index(double f) { return static_cast<int>(f); }
 inline Int8 to_index(const Lane8& f) {
-  typedef int Int32x8 __attribute__((vector_size(32)));
   return __builtin_convertvector(__builtin_convertvector(f, Int32x8), Int8);
 }
 

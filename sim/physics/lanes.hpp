@@ -25,6 +25,9 @@ typedef double Lane8 __attribute__((vector_size(64)));
 // on the vector width.
 typedef double Lane4 __attribute__((vector_size(32)));
 typedef std::int64_t Int8 __attribute__((vector_size(64)));
+// Eight 32-bit integers, as an Int8 of node indices or bin keys narrows to:
+// AVX2 converts doubles to them, and not to 64-bit integers.
+typedef std::int32_t Int32x8 __attribute__((vector_size(32)));
 // Eight bytes, one per point or node (materials, yield flags, wall holds),
 // widened to an Int8 with __builtin_convertvector.
 typedef std::uint8_t Bytes8 __attribute__((vector_size(8)));

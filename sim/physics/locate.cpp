@@ -68,8 +68,7 @@ int* counts_of(World& w, int t) {
 // lane-by-lane loop in compute_stencils tests each point for both, and perf
 // put 9 % of locate on it.
 void count_eight(const Int8& bin, int* keys, int* counts) {
-  typedef int Int8x32 __attribute__((vector_size(32)));
-  const Int8x32 narrow = __builtin_convertvector(bin, Int8x32);
+  const Int32x8 narrow = __builtin_convertvector(bin, Int32x8);
   std::memcpy(keys, &narrow, sizeof narrow);
   for (int l = 0; l < 8; ++l) ++counts[narrow[l]];
 }
