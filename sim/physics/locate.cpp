@@ -338,7 +338,20 @@ bool locate_and_sort(World& w) {
 #pragma omp single nowait
   finish_bands(w, threads);
   int* counts = counts_of(w, t);
-  for (int p = lo; p < hi; ++p) w.order[counts[w.bin_key[p]]++] = p;
+  // A run of points of one bin (most points, stored in cell order) keeps the
+  // bin's count in a register: incremented in memory point by point, each
+  // point's store of the count waited for the one before, and perf put 18 %
+  // of locate there on an AMD EPYC. Locate went from 12.2/12.4 to 11.1/11.2
+  // ns a point on the 66,787-point slope (one thread, least/median of 6 in
+  // turns; issue 17, thirty-sixth pass). The same slots, so the same order.
+  const int* key = w.bin_key.data();
+  int* order = w.order.data();
+  for (int p = lo; p < hi;) {
+    const int k = key[p];
+    int at = counts[k];
+    do order[at++] = p++; while (p < hi && key[p] == k);
+    counts[k] = at;
+  }
 #pragma omp barrier
   order_ties_by_scene_index(w);  // the thread's own bands, which only it reads next
   return true;
