@@ -55,9 +55,7 @@ inline Lane8 floor_of(const Lane8& t) {
 // An integral f as an index. Past the range of int (a point far off the
 // grid) the conversion gives INT_MIN, a negative index: off the grid.
 inline int to_index(double f) { return static_cast<int>(f); }
-inline Int8 to_index(const Lane8& f) {
-  return __builtin_convertvector(__builtin_convertvector(f, Int32x8), Int8);
-}
+inline Int32x8 to_index(const Lane8& f) { return __builtin_convertvector(f, Int32x8); }
 
 // The three pieces of the 1D uGIMP weight S(xi) and its derivative dS/dxi,
 // xi = x_p - x_i (method notes, section 1 table). The derivative equals the
@@ -226,7 +224,7 @@ struct NodeSumsSideBySide {
 };
 
 // One axis of the stencils of one point (T = double, I = int) or eight
-// (T = Lane8, I = Int8). The base node is the first node that can carry a
+// (T = Lane8, I = Int32x8). The base node is the first node that can carry a
 // non-zero weight: x_i > x_p - h - l_p, i.e. floor((x_p - l_p - origin) / h).
 // From it, xi lies in [l_p, h + l_p) for node 0, [l_p - h, l_p) for node 1
 // and [l_p - 2h, l_p - h) for node 2, so each node has two candidate pieces;

@@ -66,6 +66,12 @@ inline bool every(const Int8& m) {
   const Int8 two = four & __builtin_shufflevector(four, four, 2, 3, 0, 1, 2, 3, 0, 1);
   return (two[0] & two[1]) != 0;
 }
+inline bool every(const Int32x8& m) {
+  const Int32x8 set = m != 0;
+  const Int32x8 four = set & __builtin_shufflevector(set, set, 4, 5, 6, 7, 0, 1, 2, 3);
+  const Int32x8 two = four & __builtin_shufflevector(four, four, 2, 3, 0, 1, 2, 3, 0, 1);
+  return (two[0] & two[1]) != 0;
+}
 
 // a * b + c rounded once (IEEE 754 fusedMultiplyAdd), for a double or lane by
 // lane: one FMA instruction where the build has one for the width, else

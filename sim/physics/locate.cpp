@@ -50,7 +50,8 @@ void throw_point_left_grid(const World& w) {
 namespace {
 
 // The bin of base node (i, j): row-major from (bin_i0, bin_j0); -1 off the
-// bins. For one node (I = int) or eight, a node a lane (I = Int8).
+// bins. For one node (I = int) or eight, a node a lane (I = Int32x8: AVX2
+// has no multiplication of 64-bit lanes).
 template <class I>
 I bin_of(const World& w, const I& i, const I& j) {
   const I bi = i - w.bin_i0, bj = j - w.bin_j0;
@@ -67,10 +68,9 @@ int* counts_of(World& w, int t) {
 // group): their keys in one store and their counts without a branch. The
 // lane-by-lane loop in compute_stencils tests each point for both, and perf
 // put 9 % of locate on it.
-void count_eight(const Int8& bin, int* keys, int* counts) {
-  const Int32x8 narrow = __builtin_convertvector(bin, Int32x8);
-  std::memcpy(keys, &narrow, sizeof narrow);
-  for (int l = 0; l < 8; ++l) ++counts[narrow[l]];
+void count_eight(const Int32x8& bin, int* keys, int* counts) {
+  std::memcpy(keys, &bin, sizeof bin);
+  for (int l = 0; l < 8; ++l) ++counts[bin[l]];
 }
 
 // Stencils of the points of Lane8 blocks [first_block, end_block), eight
@@ -84,7 +84,8 @@ void compute_stencils(World& w, int first_block, int end_block, int* counts, int
   const int n = static_cast<int>(pts.size());
   std::fill(counts, counts + w.bins, 0);
   // The window's bounds lane by lane, reduced over the lanes at the end.
-  Int8 i_lo = Int8{} + g.nx, i_hi = Int8{} - 1, j_lo = Int8{} + g.ny, j_hi = Int8{} - 1;
+  Int32x8 i_lo = Int32x8{} + g.nx, i_hi = Int32x8{} - 1, j_lo = Int32x8{} + g.ny,
+          j_hi = Int32x8{} - 1;
   int bad = n, off_bins = 0;
   const bool stream = memory_bound(w);
   for (int blk = first_block; blk < end_block; ++blk) {
@@ -99,7 +100,7 @@ void compute_stencils(World& w, int first_block, int end_block, int* counts, int
         y[l] = pts.y[first + std::min(l, count - 1)];
       }
     }
-    Int8 base_i, base_j;
+    Int32x8 base_i, base_j;
     // The derivatives are not kept: the stress phase makes them again from
     // the positions (point_update.cpp), and the compiler drops them here.
     Lane8 lanes[6], slopes[3];
@@ -108,10 +109,14 @@ void compute_stencils(World& w, int first_block, int end_block, int* counts, int
     store_stencils(&w.weights[first], count, lanes, base_i, base_j, stream);
     // x - x is 0 for a finite x and NaN otherwise. The lanes past count
     // repeat a point, so they change no bound.
-    const Int8 inside = (x - x == 0) & (y - y == 0) & (base_i >= 0) & (base_j >= 0) &
-                        (base_i + 2 < g.nx) & (base_j + 2 < g.ny);
+    // The base nodes are 32-bit lanes (no 64-bit multiplication in AVX2's
+    // bin_of, no 64-bit conversion from doubles): node indices fit (the scene
+    // reader's limit on nodes), and the tests below overflow for none.
+    const Int32x8 finite = __builtin_convertvector((x - x == 0) & (y - y == 0), Int32x8);
+    const Int32x8 inside = finite & (base_i >= 0) & (base_j >= 0) & (base_i < g.nx - 2) &
+                           (base_j < g.ny - 2);
     // Bins of the points inside only (the others' base nodes may be anything).
-    const Int8 bin = bin_of(w, inside & base_i, inside & base_j);
+    const Int32x8 bin = bin_of(w, inside & base_i, inside & base_j);
     if (count == 8 && every(inside & (bin >= 0))) {
       count_eight(bin, &w.bin_key[first], counts);
     } else {

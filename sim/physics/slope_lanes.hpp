@@ -41,8 +41,8 @@ inline Lane8 pair_rows(const Lane8 d[3]) {
 inline SlopeLanes slope_lanes(const Lane8& x, const Lane8& y, const Grid& g, const GimpShape& k) {
   Lane8 dx[3];
   SlopeLanes s;
-  gimp_axis_slopes<Lane8, Int8>(x, g.origin_x, k, dx);
-  gimp_axis_slopes<Lane8, Int8>(y, g.origin_y, k, s.dy);
+  gimp_axis_slopes<Lane8, Int32x8>(x, g.origin_x, k, dx);
+  gimp_axis_slopes<Lane8, Int32x8>(y, g.origin_y, k, s.dy);
   s.x_rows[0] = pair_rows<0>(dx);
   s.x_rows[1] = pair_rows<1>(dx);
   s.x_rows[2] = pair_rows<2>(dx);

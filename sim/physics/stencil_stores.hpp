@@ -70,13 +70,14 @@ inline void stream_block(StencilWeights* out, const Lane8 point[8]) {
 // (wx then wy) and the base nodes: a transposition in registers makes each
 // point's 56 bytes one vector, stored at once, where going through a buffer
 // on the stack cost six loads and stores a point.
-inline void store_stencils(StencilWeights* out, int count, const Lane8 w[6], const Int8& base_i,
-                           const Int8& base_j, bool stream) {
+inline void store_stencils(StencilWeights* out, int count, const Lane8 w[6],
+                           const Int32x8& base_i, const Int32x8& base_j, bool stream) {
   static_assert(sizeof(StencilWeights) == 7 * sizeof(double), "six weights, two ints");
   // The base nodes as StencilWeights lays them out: base_i in the low half
   // of the eighth word, base_j in the high half.
-  const Int8 ij = (base_i & 0xffffffff) | (base_j << 32);
-  const Lane8 a[8] = {w[0], w[1], w[2], w[3], w[4], w[5], reinterpret_cast<Lane8>(ij), Lane8{}};
+  const Lane8 ij = reinterpret_cast<Lane8>(
+      __builtin_shufflevector(base_i, base_j, 0, 8, 1, 9, 2, 10, 3, 11, 4, 12, 5, 13, 6, 14, 7, 15));
+  const Lane8 a[8] = {w[0], w[1], w[2], w[3], w[4], w[5], ij, Lane8{}};
   Lane8 t[8], u[8], point[8];
   for (int k = 0; k < 4; ++k) {
     t[2 * k] = __builtin_shufflevector(a[2 * k], a[2 * k + 1], 0, 8, 2, 10, 4, 12, 6, 14);

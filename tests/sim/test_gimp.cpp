@@ -139,7 +139,7 @@ TEST(GimpWeights, SlopesMadeAgainAreTheStencilsBitForBit) {
         if (l % 4 == 0) x[l] = std::round(x[l] / k.lp) * k.lp;
       }
       sim::Lane8 d[3];
-      sim::gimp_axis_slopes<sim::Lane8, sim::Int8>(x, -1.0, k, d);
+      sim::gimp_axis_slopes<sim::Lane8, sim::Int32x8>(x, -1.0, k, d);
       for (int l = 0; l < 8; ++l) {
         sim::StencilWeights st;
         sim::StencilSlopes one;
