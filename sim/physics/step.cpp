@@ -87,10 +87,15 @@ void reset_grid(World& w) {
   int first, last;
   own_rows(w, first, last);
   set_row_spans(w, first, last);
+  // An array at a time: the five stores of a node in one loop were compiled
+  // to scalar stores (the arrays might overlap, as far as the compiler
+  // knows), and perf put 3.7 % of a 66,787-point run on them.
   for (int j = first; j < last; ++j) {
     const int* span = g.span_of_row(j);
-    for (int k = g.node(span[0], j); k < g.node(span[1], j); ++k)
-      g.mass[k] = g.px[k] = g.py[k] = g.fx[k] = g.fy[k] = 0.0;
+    const int k = g.node(span[0], j), n = g.node(span[1], j) - k;
+    if (n <= 0) continue;
+    for (auto* a : {&g.mass, &g.px, &g.py, &g.fx, &g.fy})
+      std::fill_n(a->data() + k, n, 0.0);
   }
   if (!g.friction_walls.empty()) reset_wall_gaps(g, first, last);
   clock.finish();
