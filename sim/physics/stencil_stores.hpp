@@ -75,8 +75,8 @@ inline void store_stencils(StencilWeights* out, int count, const Lane8 w[6],
   static_assert(sizeof(StencilWeights) == 7 * sizeof(double), "six weights, two ints");
   // The base nodes as StencilWeights lays them out: base_i in the low half
   // of the eighth word, base_j in the high half.
-  const Lane8 ij = reinterpret_cast<Lane8>(
-      __builtin_shufflevector(base_i, base_j, 0, 8, 1, 9, 2, 10, 3, 11, 4, 12, 5, 13, 6, 14, 7, 15));
+  const Lane8 ij = reinterpret_cast<Lane8>(__builtin_shufflevector(
+      base_i, base_j, 0, 8, 1, 9, 2, 10, 3, 11, 4, 12, 5, 13, 6, 14, 7, 15));
   const Lane8 a[8] = {w[0], w[1], w[2], w[3], w[4], w[5], ij, Lane8{}};
   Lane8 t[8], u[8], point[8];
   for (int k = 0; k < 4; ++k) {

@@ -202,12 +202,14 @@ TEST(Transfer, PointAtTheEndOfTheIndexRangeLeavesTheGrid) {
       simtest::block_scenario({1.0, 1.0}, {2.0, 1.5}, 0.25, 2, {0, 0}, {3, 2}));
   const double x0 = w.points.x[5], y0 = w.points.y[5];
   const sim::Grid& g = w.grid;
-  const auto at_base = [&](double base) { return g.origin_x + w.gimp.lp + (base + 0.5) * g.h; };
+  const auto at_base = [&](double origin, double base) {
+    return origin + w.gimp.lp + (base + 0.5) * g.h;
+  };
   for (double base : {2147483645.0, 2147483646.0, 2147483647.0, 2147483648.0, -2147483648.0,
                       -2147483649.0, 1e300}) {
     for (int axis = 0; axis < 2; ++axis) {
-      w.points.x[5] = axis == 0 ? at_base(base) : x0;
-      w.points.y[5] = axis == 1 ? g.origin_y + w.gimp.lp + (base + 0.5) * g.h : y0;
+      w.points.x[5] = axis == 0 ? at_base(g.origin_x, base) : x0;
+      w.points.y[5] = axis == 1 ? at_base(g.origin_y, base) : y0;
       try {
         sim::locate_points(w);
         ADD_FAILURE() << "no error for a point with base index " << base << " on axis " << axis;
