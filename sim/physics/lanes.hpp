@@ -25,8 +25,9 @@ typedef double Lane8 __attribute__((vector_size(64)));
 // on the vector width.
 typedef double Lane4 __attribute__((vector_size(32)));
 typedef std::int64_t Int8 __attribute__((vector_size(64)));
-// Eight 32-bit integers, as an Int8 of node indices or bin keys narrows to:
-// AVX2 converts doubles to them, and not to 64-bit integers.
+// Eight 32-bit integers: eight points' base nodes and bin keys (locate.cpp).
+// AVX2 converts doubles to them and multiplies them, and does neither for
+// 64-bit integers.
 typedef std::int32_t Int32x8 __attribute__((vector_size(32)));
 // Eight bytes, one per point or node (materials, yield flags, wall holds),
 // widened to an Int8 with __builtin_convertvector.
@@ -59,19 +60,17 @@ inline Lane4 high4(const Lane8& v) { return __builtin_shufflevector(v, v, 4, 5, 
 // loads and branches, and perf put 4 % of the stress phase on it; the
 // phase's least time over 6 to 8 rounds did not move beyond the noise
 // (issue 17, thirtieth pass).
+// M is a mask of eight lanes of 64 or 32 bits.
+template <class M>
+inline bool every_of_eight(const M& m) {
+  const M set = m != 0;  // all bits of a lane that holds
+  const M four = set & __builtin_shufflevector(set, set, 4, 5, 6, 7, 0, 1, 2, 3);
+  const M two = four & __builtin_shufflevector(four, four, 2, 3, 0, 1, 2, 3, 0, 1);
+  return (two[0] & two[1]) != 0;
+}
 inline bool every(bool m) { return m; }
-inline bool every(const Int8& m) {
-  const Int8 set = m != 0;  // all bits of a lane that holds
-  const Int8 four = set & __builtin_shufflevector(set, set, 4, 5, 6, 7, 0, 1, 2, 3);
-  const Int8 two = four & __builtin_shufflevector(four, four, 2, 3, 0, 1, 2, 3, 0, 1);
-  return (two[0] & two[1]) != 0;
-}
-inline bool every(const Int32x8& m) {
-  const Int32x8 set = m != 0;
-  const Int32x8 four = set & __builtin_shufflevector(set, set, 4, 5, 6, 7, 0, 1, 2, 3);
-  const Int32x8 two = four & __builtin_shufflevector(four, four, 2, 3, 0, 1, 2, 3, 0, 1);
-  return (two[0] & two[1]) != 0;
-}
+inline bool every(const Int8& m) { return every_of_eight(m); }
+inline bool every(const Int32x8& m) { return every_of_eight(m); }
 
 // a * b + c rounded once (IEEE 754 fusedMultiplyAdd), for a double or lane by
 // lane: one FMA instruction where the build has one for the width, else
