@@ -68,26 +68,32 @@ struct MaterialLanesCache {
 };
 
 // Velocity gradients L_ab = sum_i v_ia dS_ip/dx_b of points 2k and 2k + 1
-// (p and q), a stencil row at a time, one point in each half of a Lane8;
-// L = {xx, xy, yx, yy}, as {xx_a, xx_c, xy_a, xy_c, yx_a, yx_c, yy_a, yy_c}.
+// (p and q), one point in each half of a Lane8; L = {xx, xy, yx, yy}, as
+// {xx_a, xx_c, xy_a, xy_c, yx_a, yx_c, yy_a, yy_c}.
+// S_ip is a product of an x and a y weight (Eq. 12), so a node column's
+// velocities are summed down its three rows first, by the y weights and by
+// their slopes, and the column sums then times the x slopes and weights:
+// L_xx = sum_col Sx'_col sum_row Sy_row v_x. Formed node by node (until issue
+// 17's thirty-seventh pass) each row took two products more and kept the x
+// factors live across the loop; see scatter_point_force for what it gained.
 template <int k>
 Lane8 velocity_gradients(const World& w, int p, int q, const SlopeLanes& d) {
   const Grid& g = w.grid;
   const StencilWeights &a = w.weights[p], &c = w.weights[q];
-  const Lane8 x_slopes = d.x_rows[k], x_weights_ac = join4(x_weights(a), x_weights(c));
-  Lane8 lxx{}, lxy{}, lyx{}, lyy{};
+  Lane8 vx_wy{}, vx_dy{}, vy_wy{}, vy_dy{};  // column sums of v by Sy and by Sy'
   for (int b = 0; b < 3; ++b) {
     const int ra = g.node(a.base_i, a.base_j + b), rc = g.node(c.base_i, c.base_j + b);
-    const Lane8 gx = x_slopes * join4(splat4(a.wy[b]), splat4(c.wy[b]));
-    const Lane8 gy = x_weights_ac * pair_halves<k>(d.dy[b]);
+    const Lane8 wy = join4(splat4(a.wy[b]), splat4(c.wy[b])), dy = pair_halves<k>(d.dy[b]);
     const Lane8 vx = load4x2(g.vx.data(), ra, rc);
     const Lane8 vy = load4x2(g.vy.data(), ra, rc);
-    lxx = fused(vx, gx, lxx);
-    lxy = fused(vx, gy, lxy);
-    lyx = fused(vy, gx, lyx);
-    lyy = fused(vy, gy, lyy);
+    vx_wy = fused(vx, wy, vx_wy);
+    vx_dy = fused(vx, dy, vx_dy);
+    vy_wy = fused(vy, wy, vy_wy);
+    vy_dy = fused(vy, dy, vy_dy);
   }
-  return sum3_of_halves(lxx, lxy, lyx, lyy);
+  const Lane8 x_slopes = d.x_rows[k], x_weights_ac = join4(x_weights(a), x_weights(c));
+  return sum3_of_halves(vx_wy * x_slopes, vx_dy * x_weights_ac, vy_wy * x_slopes,
+                        vy_dy * x_weights_ac);
 }
 
 // What the force scatter needs of eight points just updated, one lane each:
@@ -175,6 +181,15 @@ void update_eight_stresses(World& w, const int* p, int count, double dt, const S
 // Adds the internal and body forces of point p, lane l of `u`, to its nodes,
 // Eqs. (16), (17): `sums` holds the rows of fx (low halves) and fy (high
 // halves) at p's base node, so each line below is both components at once.
+// f_int = -V_p sigma_p . grad S_ip and f_ext = m_p b S_ip with S_ip = Sx Sy
+// (Eq. 12) are, row by row, Sy (m_p b Sx - V_p sigma_.x Sx') + Sy' (-V_p
+// sigma_.y Sx): the two bracketed factors are formed once a point, and a row
+// adds two products. Formed node by node (until issue 17's thirty-seventh
+// pass), a row took five products and the held rows spilled to the stack;
+// with the velocity gradients' column sums, the stress phase went from
+// 34.4/35.8 to 29.7/30.6 ns a point on the 66,787-point slope (one thread,
+// least/median of 8 in turns; the force scatter alone 32.3/34.5). Rounded
+// otherwise, so the bits changed (bench/README.md).
 void scatter_point_force(World& w, int p, const UpdatedLanes& u, int l, const Vec2& gravity,
                          NodeSumsSideBySide& sums) {
   const StencilWeights& st = w.weights[p];
@@ -186,14 +201,10 @@ void scatter_point_force(World& w, int p, const UpdatedLanes& u, int l, const Ve
   // The x rows in both halves once a point, not each product joined a row.
   const Lane8& rows = u.slopes.x_rows[l / 2];
   const Lane8 wx = twice(x_weights(st)), dx = twice(l % 2 ? high4(rows) : low4(rows));
+  const Lane8 along_wy = fused(first * dx, -V, wx * mg), along_dy = (-V * second) * wx;
   sums.hold(w.grid.node(st.base_i, st.base_j));
-  for (int b = 0; b < 3; ++b) {
-    const Lane8 S = wx * st.wy[b];
-    const Lane8 gx = dx * st.wy[b], gy = wx * u.dy[b][l];  // grad S_ip
-    const Lane8 stress_on_slope = fused(first, gx, second * gy);  // sigma_p . grad S_ip
-    // f_int = -sigma_p . grad S_ip V_p, Eq. (16); f_ext = m_p b S_ip, Eq. (17).
-    sums.rows[b] = fused(stress_on_slope, -V, fused(S, mg, sums.rows[b]));
-  }
+  for (int b = 0; b < 3; ++b)
+    sums.rows[b] = fused(along_wy, st.wy[b], fused(along_dy, u.dy[b][l], sums.rows[b]));
 }
 
 const SurfaceArrays* own_strength(const World& w) {
