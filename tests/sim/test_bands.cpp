@@ -237,9 +237,9 @@ TEST(Bands, SplitFollowsTheThreadsPace) {
 }
 
 // A thread done with its own bands takes the others' G2P bands from the top
-// of their ranges down, below each range's highest (which waits for the
-// thread above), and each band is visited once. Thread 0 holds its first
-// band until thread 1 has left the phase, so what thread 1 takes is fixed.
+// of their ranges down, each range's highest included, and each band is
+// visited once. Thread 0 holds its first band until thread 1 has left the
+// phase, so what thread 1 takes is fixed.
 TEST(Bands, GatherSharesTheBandsOfAThreadBehind) {
   sim::World w = banded_world({0, 6, 9});
   std::vector<std::atomic<int>> visits(9), visitor(9);
@@ -259,7 +259,7 @@ TEST(Bands, GatherSharesTheBandsOfAThreadBehind) {
     if (t == 1) left = true;
   });
   if (!two) GTEST_SKIP() << "no team of 2 threads";
-  const int expected[9] = {0, 1, 1, 1, 1, 0, 1, 1, 1};
+  const int expected[9] = {0, 1, 1, 1, 1, 1, 1, 1, 1};
   for (int b = 0; b < 9; ++b) {
     EXPECT_EQ(visits[b], 1) << "band " << b;
     EXPECT_EQ(visitor[b], expected[b]) << "band " << b;
