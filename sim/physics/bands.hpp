@@ -41,14 +41,6 @@ inline BandRange own_bands(const World& w) {
   return {w.thread_bands[t], w.thread_bands[t + 1]};
 }
 
-// Points in bands [first, end) of one parity.
-inline long parity_points(const World& w, int first, int end, int parity) {
-  long n = 0;
-  for (int b = first + ((first & 1) != parity); b < end; b += 2)
-    n += w.band_start[b + 1] - w.band_start[b];
-  return n;
-}
-
 // The threads' pace. This machine's two cores differ at times: pinned to
 // one, a step took 1.4 times as long per point as on the other
 // (bench/README.md), and a split by equal points then leaves the faster
@@ -100,31 +92,18 @@ inline double share_below(const World& w, int t, int threads) {
   return below / all;
 }
 
-// The time of a scatter phase: each parity takes as long as its busiest
-// thread (the threads meet at a barrier after each), a thread's time being
-// its points times its weight.
-inline double scatter_cost(const World& w) {
-  double cost = 0;
-  for (int parity = 0; parity < 2; ++parity) {
-    double busiest = 0;
-    for (std::size_t t = 0; t + 1 < w.thread_bands.size(); ++t)
-      busiest = std::max(busiest, w.thread_pace[t].weight *
-                                      parity_points(w, w.thread_bands[t], w.thread_bands[t + 1], parity));
-    cost += busiest;
-  }
-  return cost;
-}
-
-// Splits the bands among `threads` threads: first the points by the threads'
-// paces, then each boundary moves by up to kParityMoves bands while that
-// shortens the scatter phases (scatter_cost). Equal totals can hide a thread
-// with most of its points in even bands: it works on while the other waits at
-// the barrier. Moves further off cannot be judged by the scatters alone:
-// with one thread three times the other's pace and no bound on the moves,
-// the 8,000-point slope's split went to 93 : 7 instead of 75 : 25, a split
-// the phases without parity (locate, G2P) would pay for.
-constexpr int kParityMoves = 2;
-
+// Splits the bands among `threads` threads by the threads' paces: each
+// boundary at the band start nearest to the points the threads below it
+// should take. Until issue 17's thirty-seventh pass a boundary then moved by
+// up to two bands while that evened out the points of each parity, for
+// scatter phases whose parities met at a barrier; those barriers went at the
+// fourteenth pass, and on the 66,787-point slope (2 threads) the moves held
+// the split one band above the pace's for most steps: in 8 of 9 runs thread
+// 0 worked 1.3 to 4 ns a point-step more than thread 1, which waited 0.04 to
+// 0.11 ms a step (of about 2.5) at the end of the force scatter for thread
+// 0's top band. Split by the pace alone, the two threads' work differed by
+// at most 1.3 ns a point-step in 9 runs and that wait took 0.001 to 0.027 ms
+// (a throw-away timer, `bench/phases ... --threads 2 --whole-step`).
 inline void partition_bands(World& w, int threads) {
   update_pace(w, threads);
   const int bands = static_cast<int>(w.band_start.size()) - 1;
@@ -135,27 +114,8 @@ inline void partition_bands(World& w, int threads) {
   for (int t = 1; t < threads; ++t) {
     const double below = share_below(w, t, threads) * static_cast<double>(points);
     while (b < bands && w.band_start[b] < below) ++b;
+    if (b > w.thread_bands[t - 1] && below - w.band_start[b - 1] < w.band_start[b] - below) --b;
     w.thread_bands[t] = b;
-  }
-  for (int t = 0; t < threads; ++t) w.thread_pace[t].first_band_by_pace = w.thread_bands[t];
-  double cost = scatter_cost(w);
-  for (bool better = true; better;) {
-    better = false;
-    for (int t = 1; t < threads; ++t) {
-      for (const int move : {-2, -1, 1, 2}) {
-        const int was = w.thread_bands[t], to = was + move;
-        if (to < w.thread_bands[t - 1] || to > w.thread_bands[t + 1]) continue;
-        if (std::abs(to - w.thread_pace[t].first_band_by_pace) > kParityMoves) continue;
-        w.thread_bands[t] = to;
-        const double c = scatter_cost(w);
-        if (c < cost) {
-          cost = c;
-          better = true;
-        } else {
-          w.thread_bands[t] = was;
-        }
-      }
-    }
   }
   for (int t = 0; t < threads; ++t)
     w.thread_pace[t].points = w.band_start[w.thread_bands[t + 1]] - w.band_start[w.thread_bands[t]];

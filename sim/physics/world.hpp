@@ -50,7 +50,6 @@ struct alignas(64) ThreadPace {
   long points = 0;       // points the last split gave it
   double per_point = 0;  // smoothed seconds per point; 0 until measured
   double weight = 1;     // what the split reads: per_point once every thread has one, else 1
-  int first_band_by_pace = 0;  // where the pace alone would start its bands (partition_bands)
 };
 
 // Memory on 64-byte boundaries: locate can write a block of eight stencils

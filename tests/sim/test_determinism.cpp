@@ -89,7 +89,7 @@ TEST(Determinism, ASplitByPaceGivesTheSameState) {
   for (const double slower : {3.0, 1.0 / 3.0}) {
     const SplitRun two = steps_with_pace(2, slower);
     // Thread 0's share of the points, 1 / (1 + slower) but for whole bands
-    // and the moves for parity (bands.hpp), is well off an even split.
+    // (bands.hpp), is well off an even split.
     const double share = static_cast<double>(two.points[0]) / (two.points[0] + two.points[1]);
     if (slower > 1) {
       EXPECT_LT(share, 0.4) << "thread 0 had " << two.points[0] << " points";
