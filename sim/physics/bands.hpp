@@ -232,8 +232,9 @@ inline bool take_band(World& w, int b) {
 // each thread, against 30 to 31 of work (a throw-away timer, issue 17,
 // thirty-fourth pass). The highest band of a range is taken too: left to its
 // owner (until the thirty-seventh pass), it was the owner's last, done while
-// the other thread had nothing left, and the join still took 0.06 ms of a
-// 2.5 ms step, summed over both threads; 0.045 ms taken (the same timer). Which thread visits a band changes no
+// the other thread had nothing left, and the join took 0.047 to 0.090 ms of
+// a 2.5 ms step, summed over both threads; 0.045 on average now (the same
+// timer). Which thread visits a band changes no
 // result: each band's points and sums are its own (store_point_sums). Not
 // timed into the pace: a thread that takes others' bands would otherwise
 // look slow, and be given fewer points for the phases that cannot share so.

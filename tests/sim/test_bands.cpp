@@ -236,6 +236,18 @@ TEST(Bands, SplitFollowsTheThreadsPace) {
   EXPECT_EQ(w.thread_pace[0].points + w.thread_pace[1].points + w.thread_pace[2].points, 400);
 }
 
+// A boundary goes to the band start nearest the pace's share, not the first
+// one at or above it: with equal paces thread 0 should take 65 of these 130
+// points, and 20 is nearer 65 than 120 is.
+TEST(Bands, SplitAtTheNearestBandStart) {
+  sim::World w;
+  w.band_start = {0, 10, 20, 120, 130};
+  w.band_done.resize(4);
+  sim::partition_bands(w, 2);
+  EXPECT_EQ(w.thread_bands, (std::vector<int>{0, 2, 4}));
+  EXPECT_EQ(w.thread_pace[0].points, 20);
+}
+
 // A thread done with its own bands takes the others' G2P bands from the top
 // of their ranges down, each range's highest included, and each band is
 // visited once. Thread 0 holds its first band until thread 1 has left the
