@@ -234,10 +234,10 @@ inline bool take_band(World& w, int b) {
 // owner (until the thirty-seventh pass), it was the owner's last, done while
 // the other thread had nothing left, and the join took 0.047 to 0.090 ms of
 // a 2.5 ms step, summed over both threads; 0.045 on average now (the same
-// timer). Which thread visits a band changes no
-// result: each band's points and sums are its own (store_point_sums). Not
-// timed into the pace: a thread that takes others' bands would otherwise
-// look slow, and be given fewer points for the phases that cannot share so.
+// timer). Which thread visits a band changes no result: each band's points
+// and sums are its own (store_point_sums). Not timed into the pace: a thread
+// that takes others' bands would otherwise look slow, and be given fewer
+// points for the phases that cannot share so.
 template <class Visit>
 void gather_own_bands(World& w, Visit visit) {
   const BandRange r = own_bands(w);
