@@ -76,8 +76,10 @@ struct MaterialLanesCache {
 // L_xx = sum_col Sx'_col sum_row Sy_row v_x. Formed node by node (until issue
 // 17's thirty-seventh pass) each row took two products more and kept the x
 // factors live across the loop; see scatter_point_force for what it gained.
+// Out of line, as is update_eight_stresses (see there).
 template <int k>
-Lane8 velocity_gradients(const World& w, int p, int q, const SlopeLanes& d) {
+__attribute__((noinline)) Lane8 velocity_gradients(const World& w, int p, int q,
+                                                   const SlopeLanes& d) {
   const Grid& g = w.grid;
   const StencilWeights &a = w.weights[p], &c = w.weights[q];
   Lane8 vx_wy{}, vx_dy{}, vy_wy{}, vy_dy{};  // column sums of v by Sy and by Sy'
@@ -119,8 +121,24 @@ struct UpdatedLanes {
 // selects, not branches: the step took 45 ns per point in this phase one
 // point at a time (stress and force, granular column, one thread), much of
 // it on branches that a yielding soil takes at random.
-void update_eight_stresses(World& w, const int* p, int count, double dt, const SurfaceArrays* own,
-                           MaterialLanesCache& cache, UpdatedLanes& out) {
+//
+// This and each pair's velocity_gradients are compiled as functions of
+// their own (noinline). Inlined into the band's loop, clang scheduled the
+// four pairs' gathers among the rest of the update, with more Lane8 values
+// alive at once than AVX2's sixteen registers hold (a Lane8 takes two):
+// about 1,750 of the phase's 4,300 instructions moved to or from the stack
+// (objdump). Apart, the gathers touch the stack not at all and the phase
+// has about 1,190 such moves of 3,770. Stress
+// and forces, one thread, least/median ns a point in turns (issue 17,
+// thirty-eighth pass, AMD EPYC): slope `bench/phases 1 200 --scene
+// paper-slope-phi20-n66787` 29.6/32.3 -> 26.3/29.6 with the gradients alone
+// out of line, 26.3/27.2 -> 25.8/26.6 with this too; column `1 300`
+// 34.9/40.2 -> 30.2/31.4, then 29.8/30.1 -> 29.5/29.9. The same operations,
+// so the same bits.
+__attribute__((noinline)) void update_eight_stresses(World& w, const int* p, int count,
+                                                     double dt, const SurfaceArrays* own,
+                                                     MaterialLanesCache& cache,
+                                                     UpdatedLanes& out) {
   Particles& pts = w.points;
   int q[8];
   Lane8 pairs[4], L[4];
