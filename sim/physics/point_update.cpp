@@ -42,28 +42,40 @@ struct MaterialLanesCache {
                            const SurfaceArrays* own) {
     std::uint64_t now;
     std::memcpy(&now, &materials, sizeof now);
-    if (!held || now != kinds) {
-      kinds = now;
-      held = true;
-      const MaterialConstants* m[8];
-      const MohrCoulomb* s[8];
-      // Looked up from the points again, not from `materials`: taking the bytes
-      // out of the vector made the random-field case 4 ns per point slower.
-      for (int l = 0; l < 8; ++l) {
-        m[l] = &w.materials[w.points.material[q[l]]];
-        s[l] = &m[l]->mohr_coulomb;
-      }
-      lanes.lambda = lanes_of(m, &MaterialConstants::lambda);
-      lanes.shear = lanes_of(m, &MaterialConstants::shear);
-      lanes.critical_density = lanes_of(m, &MaterialConstants::critical_density);
-      for (int l = 0; l < 8; ++l) lanes.plastic[l] = m[l]->plastic ? -1 : 0;
-      if (!own) lanes.mohr_coulomb = surface_lanes(s);
-    }
+    if (!held || now != kinds) fill(w, now, q, own);
     const auto own_lanes = [&](const std::vector<double>& a) {
       return lanes_at<Lane8>(a.data(), q, run);
     };
     if (own) lanes.mohr_coulomb = surface_lanes(*own, own_lanes);
     return lanes;
+  }
+
+  // Out of line and marked cold: it runs once a band in a scene of one
+  // soil, but inlined into update_eight_stresses it shaped that function's
+  // registers, and 1,105 of its 3,317 instructions moved to or from the
+  // stack; without it 566 of 2,468 (objdump; the fill itself is 319
+  // instructions). Stress and forces, one thread, least/median of 8 in turns
+  // (issue 17, thirty-eighth pass): slope 26.5/27.1 -> 25.5/25.9 ns a
+  // point, column 29.8/30.1 -> 29.1/29.6; a random field's 36.0/37.1 ->
+  // 36.1/37.4 (4 rounds).
+  __attribute__((noinline, cold)) void fill(const World& w, std::uint64_t now, const int q[8],
+                                            const SurfaceArrays* own) {
+    kinds = now;
+    held = true;
+    const MaterialConstants* m[8];
+    const MohrCoulomb* s[8];
+    // Looked up from the points again, not from the group's material bytes:
+    // taking the bytes out of the vector made the random-field case 4 ns per
+    // point slower.
+    for (int l = 0; l < 8; ++l) {
+      m[l] = &w.materials[w.points.material[q[l]]];
+      s[l] = &m[l]->mohr_coulomb;
+    }
+    lanes.lambda = lanes_of(m, &MaterialConstants::lambda);
+    lanes.shear = lanes_of(m, &MaterialConstants::shear);
+    lanes.critical_density = lanes_of(m, &MaterialConstants::critical_density);
+    for (int l = 0; l < 8; ++l) lanes.plastic[l] = m[l]->plastic ? -1 : 0;
+    if (!own) lanes.mohr_coulomb = surface_lanes(s);
   }
 };
 
