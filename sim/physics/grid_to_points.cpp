@@ -24,8 +24,14 @@ struct PointArrays {
 };
 
 // The walls' share of a point's velocity change, w = sum_i S_ip held_a_i, as
-// |w|^2; only for points whose stencil a wall acts on.
-double walled_squared(const Grid& g, const StencilWeights& st) {
+// |w|^2; only for points whose stencil a wall acts on. Out of line and cold,
+// as is FastestByMaterial::add_mixed: the few points they are for do not
+// shape the registers of G2P's loop. With both inlined, G2P took 12.4/13.4
+// ns a point on the 66,787-point slope and 12.5/13.3 on the column, with
+// both out of line 12.1/12.6 and 12.1/12.6 (`bench/phases`, one thread,
+// least/median of 8 and 6 in turns; issue 17, thirty-eighth pass).
+__attribute__((noinline, cold)) double walled_squared(const Grid& g,
+                                                      const StencilWeights& st) {
   Lane4 swx{}, swy{};
   for (int b = 0; b < 3; ++b) {
     const int row = g.node(st.base_i, st.base_j + b);
@@ -90,7 +96,7 @@ struct FastestByMaterial {
     std::uint64_t word;
     std::memcpy(&word, &m, sizeof word);
     if (word != m[0] * 0x0101010101010101ull) {  // of several materials: point by point
-      for (int l = 0; l < 8; ++l) largest[m[l]] = std::max(largest[m[l]], v2[l]);
+      add_mixed(m, v2);
       return;
     }
     if (m[0] != material) {
@@ -98,6 +104,10 @@ struct FastestByMaterial {
       material = m[0];
     }
     lanes = lanes < v2 ? v2 : lanes;
+  }
+  // A group of several materials, point by point (see walled_squared).
+  __attribute__((noinline, cold)) void add_mixed(const Bytes8& m, const Lane8& v2) {
+    for (int l = 0; l < 8; ++l) largest[m[l]] = std::max(largest[m[l]], v2[l]);
   }
   void fold() {
     if (material < 0) return;
