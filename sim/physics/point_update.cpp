@@ -140,13 +140,12 @@ struct UpdatedLanes {
 // alive at once than AVX2's sixteen registers hold (a Lane8 takes two):
 // about 1,750 of the phase's 4,300 instructions moved to or from the stack
 // (objdump). Apart, the gathers touch the stack not at all and the phase
-// has about 1,190 such moves of 3,770. Stress
-// and forces, one thread, least/median ns a point in turns (issue 17,
-// thirty-eighth pass, AMD EPYC): slope `bench/phases 1 200 --scene
-// paper-slope-phi20-n66787` 29.6/32.3 -> 26.3/29.6 with the gradients alone
-// out of line, 26.3/27.2 -> 25.8/26.6 with this too; column `1 300`
-// 34.9/40.2 -> 30.2/31.4, then 29.8/30.1 -> 29.5/29.9. The same operations,
-// so the same bits.
+// has about 1,190 such moves of 3,770. Stress and forces, one thread,
+// least/median ns a point in turns (issue 17, thirty-eighth pass, AMD
+// EPYC): slope `bench/phases 1 200 --scene paper-slope-phi20-n66787`
+// 29.6/32.3 -> 26.3/29.6 with the gradients alone out of line, 26.3/27.2 ->
+// 25.8/26.6 with this too; column `1 300` 34.9/40.2 -> 30.2/31.4, then
+// 29.8/30.1 -> 29.5/29.9. The same operations, so the same bits.
 __attribute__((noinline)) void update_eight_stresses(World& w, const int* p, int count,
                                                      double dt, const SurfaceArrays* own,
                                                      MaterialLanesCache& cache,
