@@ -43,13 +43,20 @@ class BinaryWriter {
   void put_vector(const std::vector<T>& v, const std::vector<int>& from) {
     static_assert(std::is_trivially_copyable<T>::value, "raw bytes only");
     if (from.empty()) return put_vector(v);
-    put(std::uint64_t(from.size()));
-    const std::size_t at = bytes_.size();
-    bytes_.resize(at + from.size() * sizeof(T));
-    char* out = &bytes_[at];
+    char* out = at(put_space<T>(from.size()));
     for (std::size_t i = 0; i < from.size(); ++i)
       std::memcpy(out + i * sizeof(T), &v[from[i]], sizeof(T));
   }
+  // Room for an array of n values of T, after its size as put_vector writes
+  // it, to be filled later through at(): the offset of its first byte.
+  template <class T>
+  std::size_t put_space(std::size_t n) {
+    put(std::uint64_t(n));
+    const std::size_t offset = bytes_.size();
+    bytes_.resize(offset + n * sizeof(T));
+    return offset;
+  }
+  char* at(std::size_t offset) { return &bytes_[offset]; }
   void put_string(const std::string& s) {
     put(std::uint64_t(s.size()));
     bytes_.append(s);

@@ -78,7 +78,7 @@ void follow_free_cores(bool follow) { following = follow; }
 
 int team_size(Team& team) {
   const int asked = omp_get_max_threads();
-  if (asked == 1 || !following) return asked;
+  if (asked == 1 || !following) return team.threads = asked;
   const auto now = std::chrono::steady_clock::now();
   const auto wait = team.check_soon ? kConfirm : kRecount;
   if (asked != team.asked || now - team.counted >= wait) {

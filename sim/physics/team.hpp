@@ -43,7 +43,7 @@ constexpr std::chrono::milliseconds kConfirm{20};
 
 struct Team {
   int asked = 0;    // omp_get_max_threads() when last counted
-  int threads = 0;  // the team's size since then
+  int threads = 0;  // the team's size since then: the last step's
   int last_count = 0;  // free_cores() at the count before
   bool check_soon = false;  // count again after kConfirm, not kRecount
   std::chrono::steady_clock::time_point counted{};

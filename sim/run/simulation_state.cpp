@@ -4,7 +4,11 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <cstring>
+#include <stdexcept>
 #include <type_traits>
+
+#include <omp.h>
 
 #include "sim/io/binary_io.hpp"
 #include "sim/run/simulation.hpp"
@@ -116,6 +120,65 @@ std::size_t state_bytes_about(const World& w) {
   return w.points.size() * (doubles * sizeof(double) + 2) + kHeaderBytes;
 }
 
+// The point arrays of a state, each in scene order: their room is taken as
+// the state is written (add), then the last step's team gathers them there
+// (fill), each thread one run of the points in every array. The watchdog
+// saves the state every kWatchdogScanSteps steps between two steps, while
+// the team's other threads wait: one thread took 2.1 ms a save on the
+// 66,787-point slope, 42 us a step of about 2,500 (2 threads, a throw-away
+// timer, issue 17, thirty-ninth pass). Copies, so the same bytes.
+class SceneOrderArrays {
+ public:
+  explicit SceneOrderArrays(std::size_t points) : n_(points) {}
+
+  template <class T>
+  void add(BinaryWriter& w, const std::vector<T>& v) {
+    if (v.size() != n_) throw std::logic_error("a point array of another length than the points");
+    copies(v).push_back({w.put_space<T>(n_), v.data()});
+  }
+
+  // `from[i]`: the slot of the point of scene index i; empty where the
+  // points are stored in scene order.
+  void fill(BinaryWriter& w, const std::vector<int>& from, int threads) const {
+    const std::size_t n = n_;
+#pragma omp parallel num_threads(threads)
+    {
+      const std::size_t k = static_cast<std::size_t>(omp_get_num_threads());
+      const std::size_t t = static_cast<std::size_t>(omp_get_thread_num());
+      const std::size_t lo = n * t / k, hi = n * (t + 1) / k;
+      gather(w, doubles_, from, lo, hi);
+      gather(w, bytes_, from, lo, hi);
+    }
+  }
+
+ private:
+  template <class T>
+  struct Copy {
+    std::size_t offset;
+    const T* source;
+  };
+  std::vector<Copy<double>>& copies(const std::vector<double>&) { return doubles_; }
+  std::vector<Copy<std::uint8_t>>& copies(const std::vector<std::uint8_t>&) { return bytes_; }
+
+  template <class T>
+  static void gather(BinaryWriter& w, const std::vector<Copy<T>>& list,
+                     const std::vector<int>& from, std::size_t lo, std::size_t hi) {
+    for (const Copy<T>& c : list) {
+      char* out = w.at(c.offset);
+      if (from.empty()) {
+        std::memcpy(out + lo * sizeof(T), c.source + lo, (hi - lo) * sizeof(T));
+        continue;
+      }
+      for (std::size_t i = lo; i < hi; ++i)
+        std::memcpy(out + i * sizeof(T), &c.source[from[i]], sizeof(T));
+    }
+  }
+
+  std::size_t n_;
+  std::vector<Copy<double>> doubles_;
+  std::vector<Copy<std::uint8_t>> bytes_;
+};
+
 // 64-bit FNV-1a.
 std::uint64_t hash_bytes(const std::string& bytes) {
   std::uint64_t h = 1469598103934665603ULL;
@@ -220,14 +283,16 @@ std::string Simulation::save_state(std::string buffer) const {
   for (const MaterialSpec& m : world_.material_specs) put_material(w, m);
   const Particles& pts = world_.points;
   w.put(std::uint64_t(pts.size()));
-  for (const std::vector<double>* a : point_arrays(pts)) w.put_vector(*a, from);
-  w.put_vector(pts.material, from);
-  w.put_vector(pts.yielded, from);
+  SceneOrderArrays arrays(pts.size());
+  for (const std::vector<double>* a : point_arrays(pts)) arrays.add(w, *a);
+  arrays.add(w, pts.material);
+  arrays.add(w, pts.yielded);
   if (world_.transfer == TransferScheme::Apic)
-    for (const std::vector<double>* a : affine_arrays(pts)) w.put_vector(*a, from);
+    for (const std::vector<double>* a : affine_arrays(pts)) arrays.add(w, *a);
   w.put(world_.strength.active());
   if (world_.strength.active())
-    for (const std::vector<double>* a : strength_arrays(world_.strength)) w.put_vector(*a, from);
+    for (const std::vector<double>* a : strength_arrays(world_.strength)) arrays.add(w, *a);
+  arrays.fill(w, from, std::max(1, world_.team.threads));
   return w.take();
 }
 

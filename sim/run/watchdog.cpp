@@ -2,6 +2,9 @@
 
 #include "sim/physics/point_order.hpp"
 
+#include <omp.h>
+
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -95,18 +98,28 @@ std::string left_grid_advice(const World& w, const Scenario& s) {
 
 // The points are read where they are stored, which may be cell order
 // (point_order.hpp): the bad point named is the first by scene index, and
-// "more points" are those after it in the scene.
+// "more points" are those after it in the scene. The scan runs on the last
+// step's team, between two steps (see SceneOrderArrays in
+// simulation_state.cpp): a minimum, the same whatever the number of threads.
 std::string find_bad_point(const World& w) {
   const Particles& pts = w.points;
   const std::size_t n = pts.size();
-  std::size_t slot = n;
-  int first = static_cast<int>(n);
-  for (std::size_t s = 0; s < n; ++s) {
-    if (finite_state(pts, s) && !over_compressed(w, s)) continue;
-    const int scene = scene_index_of(w, static_cast<int>(s));
-    if (scene < first) first = scene, slot = s;
+  const long count = static_cast<long>(n);
+  // Each thread's least scene index of a bad point in its run of slots. An
+  // OpenMP min reduction here broke the link: ld's LLVM 14 plugin refused
+  // the object ("Expected at most one ThinLTO module per bitcode file").
+  const int threads = std::max(1, w.team.threads);
+  std::vector<int> least(static_cast<std::size_t>(threads), static_cast<int>(n));
+#pragma omp parallel num_threads(threads)
+  {
+    const long k = omp_get_num_threads(), t = omp_get_thread_num();
+    for (long s = count * t / k; s < count * (t + 1) / k; ++s)
+      if (!finite_state(pts, s) || over_compressed(w, s))
+        least[t] = std::min(least[t], scene_index_of(w, static_cast<int>(s)));
   }
-  if (slot == n) return "";
+  const int first = *std::min_element(least.begin(), least.end());
+  if (first == static_cast<int>(n)) return "";
+  const std::size_t slot = static_cast<std::size_t>(slot_of_scene_index(w, first));
   if (!finite_state(pts, slot)) {
     // A value that turned non-finite in a step has spread through the grid
     // to its neighbours by the step's end: say how far.

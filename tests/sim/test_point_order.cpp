@@ -205,7 +205,10 @@ TEST(PointOrder, TheWatchdogNamesTheSamePointInEitherOrder) {
   w.points.vy[sim::slot_of_scene_index(w, late)] = nan;
   w.points.sxy[sim::slot_of_scene_index(w, n / 3)] = nan;
   w.points.x[sim::slot_of_scene_index(w, n / 2)] = nan;  // one "more point" after it
+  w.team.threads = 1;  // the scan runs on the last step's team (watchdog.cpp)
   const std::string sorted = sim::find_bad_point(w);
+  w.team.threads = 3;  // an uneven split
+  EXPECT_EQ(sim::find_bad_point(w), sorted);
   sim::restore_scene_order(w);
   const std::string in_scene_order = sim::find_bad_point(w);
   EXPECT_EQ(sorted, in_scene_order);

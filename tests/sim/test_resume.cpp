@@ -2,12 +2,14 @@
 // exactly the state of a run that never stopped, with the same frames at
 // the same times; a state is refused by a scenario it does not belong to.
 #include <gtest/gtest.h>
+#include <omp.h>
 
 #include <cstdint>
 #include <string>
 #include <vector>
 
 #include "sim/io/binary_io.hpp"
+#include "sim/physics/team.hpp"
 #include "sim/run/simulation.hpp"
 #include "support.hpp"
 
@@ -194,6 +196,33 @@ TEST(Resume, MidSlideWithARandomFieldGivesTheSameFinalState) {
   const sim::Scenario other = short_slope_with_field(12);
   EXPECT_EQ(sim::stage_prefix_key(s, 1), sim::stage_prefix_key(other, 1));
   EXPECT_NE(sim::stage_prefix_key(s, 2), sim::stage_prefix_key(other, 2));
+}
+
+// The last step's team gathers the point arrays into a saved state
+// (SceneOrderArrays, simulation_state.cpp): one thread and three, an uneven
+// split, save the same bytes of them. The states differ only in the stages'
+// wall times, which come before the points.
+TEST(Resume, ThePointsAreSavedTheSameOnAnyTeam) {
+  const sim::Scenario s = short_slope_with_field(11);  // with the strength arrays
+  std::vector<std::string> saved;
+  std::size_t points = 0;
+  for (int threads : {1, 3}) {
+    sim::follow_free_cores(false);
+    omp_set_num_threads(threads);
+    Recorder stopper;
+    stopper.stop_at = 1.61;
+    sim::Simulation sim(s);
+    EXPECT_THROW(sim.run(stopper), Stopped);
+    saved.push_back(stopper.saved);
+    points = sim.world().points.size();
+  }
+  // 14 arrays of doubles, the material and yield bytes, the two strengths.
+  const std::size_t tail = points * (16 * sizeof(double) + 2);
+  ASSERT_EQ(saved[0].size(), saved[1].size());
+  ASSERT_GT(saved[0].size(), tail);
+  EXPECT_TRUE(saved[0].compare(saved[0].size() - tail, tail, saved[1], saved[1].size() - tail,
+                               tail) == 0)
+      << "the point arrays saved on 3 threads differ from those on 1";
 }
 
 }  // namespace
