@@ -10,17 +10,13 @@
 #include <sstream>
 
 #include "sim/physics/bands.hpp"
+#include "sim/physics/locate_stencils.hpp"
 #include "sim/physics/point_order.hpp"
-#include "sim/physics/stencil_stores.hpp"
 #include "sim/physics/step.hpp"
 
 namespace sim {
 
 namespace {
-
-// Window partials per thread: i_lo, i_hi, j_lo, j_hi, first point off the
-// grid, points off the bins.
-constexpr int kWindowInts = 6;
 
 // The bins a step counts its points in while it computes their stencils are
 // the last step's base nodes and this margin around them: a step moves a point
@@ -48,107 +44,6 @@ void throw_point_left_grid(const World& w) {
 }
 
 namespace {
-
-// The bin of base node (i, j): row-major from (bin_i0, bin_j0); -1 off the
-// bins. For one node (I = int) or eight, a node a lane (I = Int32x8: AVX2
-// has no multiplication of 64-bit lanes).
-template <class I>
-I bin_of(const World& w, const I& i, const I& j) {
-  const I bi = i - w.bin_i0, bj = j - w.bin_j0;
-  const auto on = (bi >= 0) & (bi < w.bin_width) & (bj >= 0) & (bj * w.bin_width < w.bins);
-  return on ? bj * w.bin_width + bi : I{} - 1;
-}
-
-// Thread t's counts, one per bin.
-int* counts_of(World& w, int t) {
-  return w.thread_counts.data() + static_cast<std::size_t>(t) * w.bins;
-}
-
-// Eight points' bins, all inside the grid and on the bins (nearly every
-// group): their keys in one store and their counts without a branch. The
-// lane-by-lane loop in compute_stencils tests each point for both, and perf
-// put 9 % of locate on it.
-void count_eight(const Int32x8& bin, int* keys, int* counts) {
-  std::memcpy(keys, &bin, sizeof bin);
-  for (int l = 0; l < 8; ++l) ++counts[bin[l]];
-}
-
-// Stencils of the points of Lane8 blocks [first_block, end_block), eight
-// points at a time (gimp.hpp; the last block repeats its last point where the
-// points run out), each point counted in its bin (`counts`, the thread's,
-// zeroed here) while its base node is at hand. Writes the thread's window
-// partials to `window`.
-void compute_stencils(World& w, int first_block, int end_block, int* counts, int* window) {
-  const Particles& pts = w.points;
-  const Grid& g = w.grid;
-  const int n = static_cast<int>(pts.size());
-  std::fill(counts, counts + w.bins, 0);
-  // The window's bounds lane by lane, reduced over the lanes at the end.
-  Int32x8 i_lo = Int32x8{} + g.nx, i_hi = Int32x8{} - 1, j_lo = Int32x8{} + g.ny,
-          j_hi = Int32x8{} - 1;
-  int bad = n, off_bins = 0;
-  const bool stream = memory_bound(w);
-  for (int blk = first_block; blk < end_block; ++blk) {
-    const int first = 8 * blk, count = std::min(8, n - first);
-    Lane8 x, y;
-    if (count == 8) {
-      x = load8(&pts.x[first]);
-      y = load8(&pts.y[first]);
-    } else {
-      for (int l = 0; l < 8; ++l) {
-        x[l] = pts.x[first + std::min(l, count - 1)];
-        y[l] = pts.y[first + std::min(l, count - 1)];
-      }
-    }
-    Int32x8 base_i, base_j;
-    // The derivatives are not kept: the stress phase makes them again from
-    // the positions (point_update.cpp), and the compiler drops them here.
-    Lane8 lanes[6], slopes[3];
-    gimp_axis(x, g.origin_x, w.gimp, base_i, &lanes[0], slopes);
-    gimp_axis(y, g.origin_y, w.gimp, base_j, &lanes[3], slopes);
-    store_stencils(&w.weights[first], count, lanes, base_i, base_j, stream);
-    // x - x is 0 for a finite x and NaN otherwise. The lanes past count
-    // repeat a point, so they change no bound.
-    // The base nodes are 32-bit lanes (no 64-bit multiplication in AVX2's
-    // bin_of, no 64-bit conversion from doubles): node indices fit (the scene
-    // reader's limit on nodes), and the tests below overflow for none.
-    const Int32x8 finite = __builtin_convertvector((x - x == 0) & (y - y == 0), Int32x8);
-    const Int32x8 inside = finite & (base_i >= 0) & (base_j >= 0) & (base_i < g.nx - 2) &
-                           (base_j < g.ny - 2);
-    // Bins of the points inside only (the others' base nodes may be anything).
-    const Int32x8 bin = bin_of(w, inside & base_i, inside & base_j);
-    if (count == 8 && every(inside & (bin >= 0))) {
-      count_eight(bin, &w.bin_key[first], counts);
-    } else {
-      for (int l = 0; l < count; ++l) {
-        if (!inside[l]) {
-          bad = std::min(bad, scene_index_of(w, first + l));
-          continue;
-        }
-        if (bin[l] < 0) {
-          ++off_bins;
-          continue;
-        }
-        w.bin_key[first + l] = static_cast<int>(bin[l]);
-        ++counts[bin[l]];
-      }
-    }
-    // Points off the grid stay out of the window.
-    i_lo = (inside & (base_i < i_lo)) ? base_i : i_lo;
-    i_hi = (inside & (base_i > i_hi)) ? base_i : i_hi;
-    j_lo = (inside & (base_j < j_lo)) ? base_j : j_lo;
-    j_hi = (inside & (base_j > j_hi)) ? base_j : j_hi;
-  }
-  int partial[kWindowInts] = {g.nx, -1, g.ny, -1, bad, off_bins};
-  for (int l = 0; l < 8; ++l) {
-    partial[0] = std::min(partial[0], static_cast<int>(i_lo[l]));
-    partial[1] = std::max(partial[1], static_cast<int>(i_hi[l]));
-    partial[2] = std::min(partial[2], static_cast<int>(j_lo[l]));
-    partial[3] = std::max(partial[3], static_cast<int>(j_hi[l]));
-  }
-  std::copy(partial, partial + kWindowInts, window);
-  if (stream) _mm_sfence();  // the streamed lines before the barrier that hands them on
-}
 
 // Within one base node the counting sort leaves points by slot; where the
 // points are stored in cell order (point_order.hpp) that is not scene order,
@@ -312,17 +207,13 @@ bool locate_and_sort(World& w) {
   const int t = omp_get_thread_num(), threads = omp_get_num_threads();
   const int n = static_cast<int>(w.points.size());
   // Each thread takes a run of whole Lane8 blocks in index order, for the
-  // stencils and for both passes of the counting sort: its share of the
-  // points by its pace (bands.hpp), equal shares on a new team.
-  const int blocks = (n + 7) / 8;
-  const auto block_below = [&](int u) { return static_cast<int>(share_below(w, u, threads) * blocks + 0.5); };
-  const int first_block = block_below(t), end_block = block_below(t + 1);
-  const int lo = std::min(n, 8 * first_block), hi = std::min(n, 8 * end_block);
-  int* window = &w.thread_window[static_cast<std::size_t>(t) * kWindowInts];
-  WorkClock clock(w);
-  compute_stencils(w, first_block, end_block, counts_of(w, t), window);
-  clock.finish();
+  // stencils and for both passes of the counting sort: how many, the two
+  // threads of its pool settle as they go (locate_own_chunks). Not timed
+  // into the pace, which the split of the bands is for.
+  locate_own_stencils(w, t, threads);
 #pragma omp barrier
+  const BlockRange mine = own_blocks(w, t, threads);
+  const int lo = std::min(n, 8 * mine.first), hi = std::min(n, 8 * mine.end);
   if (counted_in_bins(w, threads)) {
     // The prefix's first part reads only the counts; its barrier puts the
     // window before the band starts of its second part.
@@ -372,6 +263,8 @@ void prepare_locate(World& w) {
   w.bin_key.resize(n);
   w.thread_window.resize(static_cast<std::size_t>(threads) * kWindowInts);
   w.thread_totals.resize(static_cast<std::size_t>(threads));
+  w.block_pools.resize(static_cast<std::size_t>(threads + 1) / 2);
+  for (BlockPool& p : w.block_pools) p.claimed.store(0, std::memory_order_relaxed);
   const Grid& g = w.grid;
   if (g.i_end <= g.i_begin) {
     set_bins(w, 0, 0, 0, 0, threads);

@@ -43,6 +43,23 @@ struct BandDone {
   }
 };
 
+// The points two threads of the team locate (locate.cpp), as runs of Lane8
+// blocks that the one takes from the bottom and the other from the top:
+// `claimed` counts the blocks taken this step, `low_blocks` those the
+// bottom thread took. On a cache line of its own; a copied or assigned
+// World starts with none taken.
+struct alignas(64) BlockPool {
+  std::atomic<int> claimed{0};
+  int low_blocks = 0;
+  BlockPool() = default;
+  BlockPool(const BlockPool&) {}
+  BlockPool& operator=(const BlockPool&) {
+    claimed.store(0, std::memory_order_relaxed);
+    low_blocks = 0;
+    return *this;
+  }
+};
+
 // One thread's pace (sim/physics/bands.hpp), on a cache line of its own:
 // each thread adds to its `worked` while the others add to theirs.
 struct alignas(64) ThreadPace {
@@ -109,6 +126,7 @@ struct World {
   std::vector<int> thread_counts; // counting sort: per thread, points per bin (base node)
   std::vector<int> thread_window; // per thread: touched window, first point off the grid, points off the bins
   std::vector<int> thread_totals; // per thread: points in its run of bins
+  std::vector<BlockPool> block_pools;  // per pair of threads: locate's shared blocks
   // Per base row of the window: the first and last base node i with points
   // (the first > the last for a row without), from the counting sort.
   std::vector<int> base_row_span;
