@@ -130,10 +130,10 @@ void compute_stencils(World& w, int first_block, int end_block, int* counts, Ste
 // meet, each a quarter of what is left (at least kLeastRun), so that they
 // meet within a few hundred points having claimed about twenty runs a step.
 // Split once by the pace (until issue 17's thirty-ninth pass), the two
-// threads of the 66,787-point slope each waited 47 to 53 us a step at the
-// barrier after the stencils, of about 305 us of work each: the pace is
-// right on average, and each step's time is not (a throw-away timer, 2
-// threads, `landslide run`). A thread keeps its points in index order, the
+// threads of the 66,787-point slope each waited 23 to 66 us a step at the
+// barrier after the stencils (3.5 to 5.6 us now), of about 305 us of
+// work each: the pace is right on average, and each step's time is not (a
+// throw-away timer, 2 threads, `landslide run`). A thread keeps its points in index order, the
 // bottom thread's below the top thread's, as the counting sort needs.
 constexpr int kLeastRun = 8;
 
@@ -147,7 +147,7 @@ BlockRange pool_blocks(const World& w, int t, int threads) {
 }
 
 // Thread t's runs of its pool, with the thread's counts zeroed first.
-void locate_own_chunks(World& w, int t, int threads, StencilTally& tally) {
+void take_own_runs(World& w, int t, int threads, StencilTally& tally) {
   const BlockRange pool = pool_blocks(w, t, threads);
   BlockPool& claims = w.block_pools[static_cast<std::size_t>(t / 2)];
   const bool bottom = t % 2 == 0;
@@ -172,7 +172,7 @@ void locate_own_chunks(World& w, int t, int threads, StencilTally& tally) {
 
 void locate_own_stencils(World& w, int t, int threads) {
   StencilTally tally(w);
-  locate_own_chunks(w, t, threads, tally);
+  take_own_runs(w, t, threads, tally);
   tally.write(w.grid, &w.thread_window[static_cast<std::size_t>(t) * kWindowInts]);
 }
 

@@ -41,6 +41,10 @@ TEST(Determinism, OneAndTwoThreadsGiveTheSameState) {
   std::printf("state hash: 1 thread %016llx, 2 threads %016llx\n",
               static_cast<unsigned long long>(one), static_cast<unsigned long long>(two));
   EXPECT_EQ(one, two) << "new hash with 2 threads: " << std::hex << two;
+  // Three: locate's pair of threads and one alone with its pool
+  // (sim/physics/locate_stencils.cpp).
+  const std::uint64_t three = run_with_threads(file, 3);
+  EXPECT_EQ(one, three) << "new hash with 3 threads: " << std::hex << three;
 }
 
 // The same with APIC's transfers, whose G2P a thread done with its own bands
