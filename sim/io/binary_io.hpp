@@ -37,16 +37,6 @@ class BinaryWriter {
     put(std::uint64_t(v.size()));
     bytes_.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(T));
   }
-  // v[from[0]], v[from[1]], ...: as put_vector(v) of the reordered vector,
-  // without making it. An empty `from` is the identity.
-  template <class T>
-  void put_vector(const std::vector<T>& v, const std::vector<int>& from) {
-    static_assert(std::is_trivially_copyable<T>::value, "raw bytes only");
-    if (from.empty()) return put_vector(v);
-    char* out = at(put_space<T>(from.size()));
-    for (std::size_t i = 0; i < from.size(); ++i)
-      std::memcpy(out + i * sizeof(T), &v[from[i]], sizeof(T));
-  }
   // Room for an array of n values of T, after its size as put_vector writes
   // it, to be filled later through at(): the offset of its first byte.
   template <class T>
