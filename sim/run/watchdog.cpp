@@ -105,18 +105,17 @@ std::string find_bad_point(const World& w) {
   const Particles& pts = w.points;
   const std::size_t n = pts.size();
   const long count = static_cast<long>(n);
-  // Each thread's least scene index of a bad point in its run of slots. An
+  // Each thread's least scene index of a bad point in its slots. An
   // OpenMP min reduction here broke the link: ld's LLVM 14 plugin refused
   // the object ("Expected at most one ThinLTO module per bitcode file").
   const int threads = std::max(1, w.team.threads);
   std::vector<int> least(static_cast<std::size_t>(threads), static_cast<int>(n));
-#pragma omp parallel num_threads(threads)
-  {
-    const long k = omp_get_num_threads(), t = omp_get_thread_num();
-    for (long s = count * t / k; s < count * (t + 1) / k; ++s)
-      if (!finite_state(pts, s) || over_compressed(w, s))
-        least[t] = std::min(least[t], scene_index_of(w, static_cast<int>(s)));
-  }
+#pragma omp parallel for num_threads(threads) schedule(static)
+  for (long s = 0; s < count; ++s)
+    if (!finite_state(pts, s) || over_compressed(w, s)) {
+      int& mine = least[static_cast<std::size_t>(omp_get_thread_num())];
+      mine = std::min(mine, scene_index_of(w, static_cast<int>(s)));
+    }
   const int first = *std::min_element(least.begin(), least.end());
   if (first == static_cast<int>(n)) return "";
   const std::size_t slot = static_cast<std::size_t>(slot_of_scene_index(w, first));
