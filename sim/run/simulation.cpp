@@ -157,14 +157,17 @@ StageResult Simulation::stage_so_far() const {
 }
 
 // The watchdog (sim/run/watchdog.hpp): a non-finite sum stops the run at once; a
-// full scan every kWatchdogScanSteps steps checks every point and, if all
-// are within the limits, keeps the state as the last good one.
+// full scan every kWatchdogScanSteps steps checks every point, and every
+// kWatchdogSaveSteps steps a scan that finds all within the limits keeps
+// the state as the last good one.
 void Simulation::watch(const StageSpec& stage, const StepReport& report) {
   const bool finite = step_sums_finite(report);
-  if (finite && progress_.result.steps % kWatchdogScanSteps != 0) return;
+  const long steps = progress_.result.steps;
+  if (finite && steps % kWatchdogScanSteps != 0) return;
   const std::string bad = find_bad_point(world_);  // where the points are stored
   if (!bad.empty()) stop_run(stage, bad);
   if (!finite) stop_run(stage, "a sum over the points is not finite");
+  if (steps % kWatchdogSaveSteps != 0) return;
   last_good_ = save_state(std::move(last_good_));
   last_good_time_ = time_;
 }

@@ -123,10 +123,10 @@ std::size_t state_bytes_about(const World& w) {
 // The point arrays of a state, each in scene order: their room is taken as
 // the state is written (add), then the last step's team gathers them there
 // (fill), each thread one run of the points in every array. The watchdog
-// saves the state every kWatchdogScanSteps steps between two steps, while
+// saves the state between two steps (every kWatchdogSaveSteps steps), while
 // the team's other threads wait: one thread took 2.1 ms a save on the
-// 66,787-point slope, 42 us a step of about 2,500; two threads 1.35 ms (a
-// throw-away timer, issue 17, thirty-ninth pass). Copies, so the same bytes.
+// 66,787-point slope; two threads 1.35 ms (a throw-away timer, issue 17,
+// thirty-ninth pass). Copies, so the same bytes.
 class SceneOrderArrays {
  public:
   explicit SceneOrderArrays(std::size_t points) : n_(points) {}
@@ -251,7 +251,7 @@ std::string Simulation::save_state() const { return save_state(std::string()); }
 
 // A state holds the points in scene order; they are written in that order
 // where they are stored (point_order.hpp), not moved there: the watchdog saves
-// the state every kWatchdogScanSteps steps, and moving the points back and
+// the state every kWatchdogSaveSteps steps, and moving the points back and
 // forth cost two permutations of every point array each time.
 std::string Simulation::save_state(std::string buffer) const {
   const std::vector<int> from = slots_in_scene_order(world_);

@@ -66,18 +66,39 @@ void expect_good_state(const sim::WatchdogError& e) {
   EXPECT_EQ(sim::find_bad_point(good.world()), "");
 }
 
+// The last good state as the step count of its stage.
+long steps_of_last_good(const sim::WatchdogError& e) {
+  sim::Simulation good(settling_block());
+  good.restore_state(e.last_good_state, "last good");
+  return good.stage_so_far().steps;
+}
+
 TEST(Watchdog, NonFiniteVelocityStopsTheRunAtOnce) {
-  const auto e = run_with_fault(60, [](sim::World& w) {
+  const long at = sim::kWatchdogSaveSteps + 10;
+  const auto e = run_with_fault(at, [](sim::World& w) {
     w.points.vx[7] = std::numeric_limits<double>::quiet_NaN();
   });
   const std::string what = e.what();
   // By the end of the step the NaN has spread through the grid to the
   // neighbours of point 7; the message names the first and counts the rest.
-  for (const char* part : {"stage 'settle'", "after step 61", "material 'elastic'",
-                           "non-finite", "more points with a non-finite"})
+  for (const char* part : {"stage 'settle'", "material 'elastic'", "non-finite",
+                           "more points with a non-finite"})
     expect_names(what, part);
+  expect_names(what, "after step " + std::to_string(at + 1));
   expect_good_state(e);
-  EXPECT_GT(e.last_good_time, 0.0);  // the scan at step 50
+  EXPECT_EQ(steps_of_last_good(e), sim::kWatchdogSaveSteps);  // the last save
+}
+
+// The scans between two saves keep no state: a fault after the first scan
+// loses the steps back to the stage's start.
+TEST(Watchdog, ScansBetweenSavesKeepNoState) {
+  const auto e = run_with_fault(sim::kWatchdogScanSteps + 10, [](sim::World& w) {
+    w.points.vy[5] = std::numeric_limits<double>::infinity();
+  });
+  expect_names(e.what(), "non-finite");
+  expect_good_state(e);
+  EXPECT_EQ(steps_of_last_good(e), 0);
+  EXPECT_EQ(e.last_good_time, 0.0);
 }
 
 TEST(Watchdog, OverCompressedPointStopsAtTheNextScan) {
