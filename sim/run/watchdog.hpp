@@ -35,8 +35,9 @@ constexpr int kWatchdogSaveSteps = 250;
 static_assert(kWatchdogSaveSteps % kWatchdogScanSteps == 0, "a save needs a scan");
 
 // The run stopped by a watchdog (or by any SimulationError of the step).
-// `last_good_state` is Simulation::save_state() from the last scan that
-// passed (empty if none had yet), at simulated time `last_good_time`.
+// `last_good_state` is Simulation::save_state() from the last save (the
+// stage's start, or a scan that passed at a multiple of kWatchdogSaveSteps;
+// empty if none had yet), at simulated time `last_good_time`.
 class WatchdogError : public SimulationError {
  public:
   WatchdogError(const std::string& what, std::string last_good_state, double last_good_time)
