@@ -208,7 +208,7 @@ bool locate_and_sort(World& w) {
   const int n = static_cast<int>(w.points.size());
   // Each thread takes a run of whole Lane8 blocks in index order, for the
   // stencils and for both passes of the counting sort: how many, the two
-  // threads of its pool settle as they go (locate_own_chunks). Not timed
+  // threads of its pool settle as they go (locate_stencils.cpp). Not timed
   // into the pace, which the split of the bands is for.
   locate_own_stencils(w, t, threads);
 #pragma omp barrier
