@@ -14,6 +14,7 @@ namespace sim {
 namespace {
 
 std::atomic<bool> following{true};
+std::atomic<int> held{0};  // cores kept by CoreHold
 
 // Runnable tasks on the whole machine: the fourth field of /proc/loadavg,
 // "running/total". -1 where it cannot be read.
@@ -58,8 +59,9 @@ int free_cores() {
   const int asked = omp_get_max_threads();
   const int all = runnable_tasks(), own = own_runnable_threads();
   const long cores = sysconf(_SC_NPROCESSORS_ONLN);
-  if (all < 0 || own < 0 || cores < 1) return asked;
-  const int others = std::max(0, all - own);
+  const int kept = held.load(std::memory_order_relaxed);
+  if (all < 0 || own < 0 || cores < 1) return std::clamp(asked - kept, 1, asked);
+  const int others = std::max(0, all - own) + kept;
   return static_cast<int>(std::clamp<long>(cores - others, 1, asked));
 }
 
@@ -73,6 +75,9 @@ int settle_team(Team& team, int asked, int free) {
   team.last_count = free;
   return threads;
 }
+
+CoreHold::CoreHold(int cores) : cores_(cores) { held += cores_; }
+CoreHold::~CoreHold() { held -= cores_; }
 
 void follow_free_cores(bool follow) { following = follow; }
 

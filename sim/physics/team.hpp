@@ -51,8 +51,9 @@ struct Team {
 
 // Online cores less the runnable threads of other processes (the
 // running-task count of /proc/loadavg less this process's threads in state
-// R), at least 1 and at most omp_get_max_threads(). Where /proc cannot be
-// read, omp_get_max_threads().
+// R) and less the cores held (CoreHold), at least 1 and at most
+// omp_get_max_threads(). Where /proc cannot be
+// read, omp_get_max_threads() less the cores held.
 int free_cores();
 
 // The team's size after a count that found `free` of `asked` cores: the
@@ -66,6 +67,24 @@ int settle_team(Team& team, int asked, int free);
 // thread is asked for. With follow_free_cores(false), omp_get_max_threads()
 // always.
 int team_size(Team& team);
+
+// Cores this process keeps busy beside the team: while a CoreHold lives,
+// every team that follows the free cores counts its cores as taken by
+// another program.
+// The gallery runs its finest scene on one lane and the others, one thread
+// each, on a second (gallery/src/gallery_lanes.hpp); that lane's thread is
+// one of this process's, which free_cores() leaves out of its count, so
+// without the hold the finest scene would take both cores beside it.
+class CoreHold {
+ public:
+  explicit CoreHold(int cores);
+  ~CoreHold();
+  CoreHold(const CoreHold&) = delete;
+  CoreHold& operator=(const CoreHold&) = delete;
+
+ private:
+  int cores_;
+};
 
 // For the whole process (default true). The tests that compare thread
 // counts turn it off, so that "2 threads" means two even on a loaded machine.

@@ -1,5 +1,6 @@
 // The step's team (sim/physics/team.hpp): never more threads than asked for,
-// never fewer than one, and one core fewer while another process spins.
+// never fewer than one, and one core fewer while another process spins or
+// this one holds a core.
 #include <gtest/gtest.h>
 #include <omp.h>
 #include <signal.h>
@@ -44,6 +45,18 @@ TEST(Team, ABusyProcessTakesACore) {
   waitpid(busy, nullptr, 0);
   EXPECT_LT(free, cores) << "a process spinning beside this one left all " << cores
                          << " cores counted free";
+}
+
+// A core this process holds for other work (the gallery's second lane) is
+// a busy core to every team of the process, however idle the machine.
+TEST(Team, AHeldCoreIsBusy) {
+  const long cores = sysconf(_SC_NPROCESSORS_ONLN);
+  if (cores < 2) GTEST_SKIP() << "one core: nothing to hold";
+  omp_set_num_threads(static_cast<int>(cores));
+  const sim::CoreHold hold(1);
+  EXPECT_LE(sim::free_cores(), cores - 1);
+  const sim::CoreHold all_but_one(static_cast<int>(cores) - 2);
+  EXPECT_EQ(sim::free_cores(), 1);
 }
 
 // A busy core seen at one count alone (a short-lived process) leaves the
