@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "gallery/src/gallery.hpp"
+#include "gallery/src/gallery_lanes.hpp"
 #include "output/exit_status.hpp"
 #include "output/output_dir.hpp"
 #include "output/frames.hpp"
@@ -117,8 +118,19 @@ bool inputs_ready(const GalleryOptions& o, const fs::path& scenarios, gallery::S
   return true;
 }
 
+// Every scene the figures below show, in the order they ask for them: the
+// phi = 20 scene (animated), then the studies' members.
+std::vector<gallery::Job> every_run(const fs::path& scenarios, const gallery::Studies& studies) {
+  std::vector<gallery::Job> jobs{{sim::load_scenario((scenarios / kStageScene).string()), true}};
+  for (const gallery::Study* study : {&studies.resolutions, &studies.friction_angles})
+    for (const sweep::Member& m : study->sweep.members)
+      jobs.push_back({gallery::member_scenario(*study, m), false});
+  return jobs;
+}
+
 // Makes one figure and prints its wall time, split into simulating (the
-// runs it started) and painting.
+// runs it started: none, where run_in_lanes ran every scene first) and
+// painting.
 void timed(Gallery& g, const std::string& name, const std::function<void()>& make) {
   const auto start = Clock::now();
   const double runs_before = g.run_wall();
@@ -247,6 +259,9 @@ int gallery_command(const GalleryOptions& o) {
     fs::create_directories(out);
     Gallery g(scenarios, out, o.quick);
     const std::string q = o.quick ? " [quick: h = 1.127 m]" : "";
+    const auto runs = Clock::now();
+    const std::string lanes = gallery::run_in_lanes(g, every_run(scenarios, studies));
+    std::cout << "runs: " << fmt(seconds_since(runs)) << " s (" << lanes << ")" << std::endl;
     stage_figures(g, o.quick, q);
     resolution_figure(g, studies.resolutions, q);
     friction_figures(g, studies.friction_angles, q, out);

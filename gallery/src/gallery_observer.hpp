@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cmath>
 #include <iostream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -78,8 +79,10 @@ class GalleryObserver : public sim::Observer {
     if (series_) series_->progress(sim, stage);
     if (std::chrono::steady_clock::now() - last_ < std::chrono::seconds(10)) return;
     last_ = std::chrono::steady_clock::now();
-    std::cerr << "  " << sim.scenario().name << ": " << stage.name << " t = " << sim.stage_time()
-              << " s, " << steps << " steps\n";
+    std::ostringstream line;
+    line << "  " << sim.scenario().name << ": " << stage.name << " t = " << sim.stage_time() << " s, "
+         << steps << " steps";
+    log_line(line.str());
   }
 
  private:

@@ -3,7 +3,9 @@
 #pragma once
 
 #include <filesystem>
+#include <iostream>
 #include <map>
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -37,6 +39,14 @@ struct RunResult {
 
 // "12.3" (digits after the point).
 std::string fmt(double v, int digits = 1);
+
+// One whole line on stderr: the gallery's two lanes (gallery_lanes.hpp) run
+// at once, and a line written piece by piece could be cut by the other's.
+inline void log_line(const std::string& line) {
+  static std::mutex m;
+  const std::lock_guard<std::mutex> lock(m);
+  std::cerr << line << '\n';
+}
 
 // "end at 12.8 s (at rest), runout 18.9 m", or what is shown of a failed run.
 std::string ending(const RunResult& r);

@@ -9,6 +9,8 @@
 #include <filesystem>
 #include <map>
 #include <memory>
+#include <mutex>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -60,11 +62,16 @@ class Gallery {
   // whose scene has the same physics (sim::stage_prefix_key over all its
   // stages, the key of --state-cache) returns the same result, whether it
   // came from a scene file or a sweep's member (its name is not in the key).
+  // Two threads may call it at once for scenes that share no stage
+  // (gallery_lanes.hpp): the maps are locked, the runs are not.
   RunResult& run(sim::Scenario scenario, bool animate = false) {
     use_gallery_output(scenario, quick_);
     const std::uint64_t key = sim::stage_prefix_key(scenario, scenario.stages.size());
-    auto it = runs_.find(key);
-    if (it != runs_.end()) return *it->second;
+    {
+      const std::lock_guard<std::mutex> lock(mutex_);
+      auto it = runs_.find(key);
+      if (it != runs_.end()) return *it->second;
+    }
     auto r = std::make_unique<RunResult>();
     r->scenario = std::move(scenario);
     sim::Scenario& s = r->scenario;
@@ -80,8 +87,9 @@ class Gallery {
     const auto start = Clock::now();
     sim::Simulation simulation(s);
     r->points = simulation.world().points.size();
-    std::cerr << "running " << s.name << " (" << r->points << " points, h = " << s.cell_size
-              << " m)\n";
+    std::ostringstream running;
+    running << "running " << s.name << " (" << r->points << " points, h = " << s.cell_size << " m)";
+    log_line(running.str());
     GalleryObserver observer(*r, recorder.get(), series.get());
     share_gravity_stage(simulation, observer);
     try {
@@ -92,7 +100,7 @@ class Gallery {
       // A failed run (e.g. a point thrown out of the grid) still shows its
       // last frame; the figure's caption says so.
       r->failed = e.what();
-      std::cerr << "  " << s.name << ": the run failed: " << e.what() << '\n';
+      log_line("  " + s.name + ": the run failed: " + e.what());
       if (r->has_last) {
         r->slide_end = r->last;
         r->slide_time = r->last.time;
@@ -102,9 +110,8 @@ class Gallery {
       if (recorder && recorder->pending() > 0) recorder->paint_pending();
     }
     r->wall = seconds_since(start);
-    std::cerr << "  " << s.name << ": " << fmt(r->wall) << " s wall, slide "
-              << fmt(r->slide_time) << " s" << (r->at_rest ? " (at rest)" : "") << ", runout "
-              << fmt(r->runout) << " m\n";
+    log_line("  " + s.name + ": " + fmt(r->wall) + " s wall, slide " + fmt(r->slide_time) + " s" +
+             (r->at_rest ? " (at rest)" : "") + ", runout " + fmt(r->runout) + " m");
     if (recorder) {
       const auto v0 = Clock::now();
       for (const render::VideoFiles& v : recorder->encode_videos()) {
@@ -114,11 +121,12 @@ class Gallery {
         r->videos.push_back({(out_ / (base + ".mp4")).string(),
                              v.gif.empty() ? "" : (out_ / (base + ".gif")).string()});
       }
-      std::cerr << "  encoded the animation in " << fmt(seconds_since(v0)) << " s\n";
+      log_line("  encoded the animation in " + fmt(seconds_since(v0)) + " s");
       series->write();
       r->series = read_series(work / "series.csv");
       fs::remove_all(work);
     }
+    const std::lock_guard<std::mutex> lock(mutex_);
     run_wall_ += r->wall;
     return *runs_.emplace(key, std::move(r)).first->second;
   }
@@ -171,7 +179,9 @@ class Gallery {
     const sim::Scenario& s = simulation.scenario();
     const std::size_t shared = sim::reusable_stages(s);
     if (shared == 0) return;
-    std::string& saved = gravity_states_[sim::stage_prefix_key(s, shared)];
+    std::unique_lock<std::mutex> lock(mutex_);
+    std::string& saved = gravity_states_[sim::stage_prefix_key(s, shared)];  // a map's nodes stay put
+    lock.unlock();
     if (saved.empty()) {
       observer.save_after(shared, &saved);
       return;
@@ -179,11 +189,14 @@ class Gallery {
     simulation.restore_state(saved, s.name + ": the saved gravity stage");
     const sim::StageSpec& last = s.stages[shared - 1];
     observer.stage_ends(simulation, last, simulation.results()[shared - 1]);
-    std::cerr << "  " << s.name << ": starts from the saved end of stage '" << last.name << "' ("
-              << fmt(simulation.results()[shared - 1].wall_time) << " s wall when computed)\n";
+    log_line("  " + s.name + ": starts from the saved end of stage '" + last.name + "' (" +
+             fmt(simulation.results()[shared - 1].wall_time) + " s wall when computed)");
   }
 
-  double run_wall() const { return run_wall_; }
+  double run_wall() const {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    return run_wall_;
+  }
   std::vector<std::string> failures() const {
     std::vector<std::string> f;
     for (const auto& [key, r] : runs_)
@@ -204,6 +217,7 @@ class Gallery {
   std::map<std::uint64_t, std::string> gravity_states_;
   std::unique_ptr<FramePainter> painter_;
   double run_wall_ = 0;
+  mutable std::mutex mutex_;  // for runs_, gravity_states_ and run_wall_
 };
 
 }  // namespace app::gallery

@@ -9,6 +9,7 @@
 // figures show at the paper's resolutions is looked at in gallery/README.md,
 // not here; their physics is what tests/regression/ guards.
 #include <gtest/gtest.h>
+#include <omp.h>
 #include <unistd.h>
 
 #include <filesystem>
@@ -24,6 +25,7 @@
 #include "render/png_io.hpp"
 #include "render/subprocess.hpp"
 #include "render/video.hpp"
+#include "sim/io/file_bytes.hpp"
 
 namespace {
 
@@ -145,6 +147,43 @@ TEST(Gallery, EveryFigureAndBothAnimationsFromCoarseScenes) {
     EXPECT_EQ(name.find(".tmp"), std::string::npos) << e.path();
     EXPECT_EQ(name.find(".part"), std::string::npos) << e.path();
   }
+  fs::remove_all(root);
+}
+
+// The runs on two lanes (gallery_lanes.hpp) paint what they paint on one:
+// every figure and GIF byte for byte (an mp4's bytes differ from run to run
+// of one binary). On 2 threads the finest scene and the friction-angle
+// study, which share its gravity stage, run beside the other resolutions;
+// on 1 thread every run takes its turn.
+TEST(Gallery, TwoLanesPaintWhatOneLanePaints) {
+  if (!render::ffmpeg_available(nullptr)) GTEST_SKIP() << "ffmpeg is not available";
+  const fs::path root = fresh_root("lanes");
+  const fs::path scenarios = write_coarse_scenarios(root);
+  const auto gallery_on = [&](int threads, const char* expected) {
+    omp_set_num_threads(threads);
+    app::GalleryOptions o;
+    o.out = (root / std::to_string(threads)).string();
+    o.scenarios = scenarios.string();
+    testing::internal::CaptureStdout();
+    const int status = app::gallery_command(o);
+    const std::string printed = testing::internal::GetCapturedStdout();
+    EXPECT_EQ(status, app::kExitOk);
+    EXPECT_NE(printed.find(expected), std::string::npos) << printed;
+  };
+  const int threads = omp_get_max_threads();
+  gallery_on(1, "(one lane)");
+  gallery_on(2, "(two lanes: h = 2.000 m");
+  omp_set_num_threads(threads);
+  int compared = 0;
+  for (const fs::directory_entry& e : fs::directory_iterator(root / "1")) {
+    const std::string ext = e.path().extension().string();
+    if (ext != ".png" && ext != ".gif") continue;
+    EXPECT_EQ(sim::read_file_bytes(e.path(), "missing"),
+              sim::read_file_bytes(root / "2" / e.path().filename(), "missing"))
+        << e.path().filename();
+    ++compared;
+  }
+  EXPECT_EQ(compared, 9);  // 7 figures, 2 GIFs
   fs::remove_all(root);
 }
 
