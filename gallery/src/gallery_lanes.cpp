@@ -4,7 +4,6 @@
 
 #include <atomic>
 #include <future>
-#include <limits>
 
 #include "sim/physics/team.hpp"
 

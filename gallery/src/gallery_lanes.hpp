@@ -2,14 +2,14 @@
 //
 // The paper's study is one scene of 66,787 points and six of 1,661 to 28,711.
 // Run one after another on 2 threads, the small ones took the second core
-// for little: the 8,370-point slope ran 1.6 times as fast on 2 threads as on
-// one, where the 66,787-point slope ran 1.75 to 2 times as fast. So the
-// finest scene and the scenes that share its gravity stage take the first
-// lane, on the threads the process has, and the rest take a second, one
-// thread each, one after another. While the second lane has work it holds a
-// core (sim::CoreHold), so the first lane's team runs one thread beside it
-// and takes the second core back within a count (sim/physics/team.hpp) of
-// the lane's end. The runs' results do not depend on their thread counts, so
+// for little: the 8,370-point slope ran 1.4 to 1.6 times as fast on 2
+// threads as on one, the 66,787-point slope 1.7 to 1.9 times (bench/phases
+// --whole-step, three rounds). So the finest scene and the scenes that
+// share its gravity stage take the first lane, on the process's threads,
+// and the rest take a second, one thread, one scene after another. While
+// the second lane has work it holds a core (sim::CoreHold), so the first
+// lane's team runs one thread beside it and takes the second core back
+// within a count (sim/physics/team.hpp) of the lane's end. The runs' results do not depend on their thread counts, so
 // every figure is byte for byte what runs one after another paint.
 //
 // Measured before it was written, with `landslide run` in two processes of

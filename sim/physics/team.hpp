@@ -52,8 +52,8 @@ struct Team {
 // Online cores less the runnable threads of other processes (the
 // running-task count of /proc/loadavg less this process's threads in state
 // R) and less the cores held (CoreHold), at least 1 and at most
-// omp_get_max_threads(). Where /proc cannot be
-// read, omp_get_max_threads() less the cores held.
+// omp_get_max_threads(). Where /proc cannot be read, omp_get_max_threads()
+// less the cores held.
 int free_cores();
 
 // The team's size after a count that found `free` of `asked` cores: the
@@ -70,11 +70,10 @@ int team_size(Team& team);
 
 // Cores this process keeps busy beside the team: while a CoreHold lives,
 // every team that follows the free cores counts its cores as taken by
-// another program.
-// The gallery runs its finest scene on one lane and the others, one thread
-// each, on a second (gallery/src/gallery_lanes.hpp); that lane's thread is
-// one of this process's, which free_cores() leaves out of its count, so
-// without the hold the finest scene would take both cores beside it.
+// another program. The gallery runs its finest scene on one lane and the
+// others on a second of one thread; that thread is one of this process's,
+// which free_cores() leaves out of its count, so without the hold the finest
+// scene would take both cores beside it.
 class CoreHold {
  public:
   explicit CoreHold(int cores);
