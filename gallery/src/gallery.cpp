@@ -128,22 +128,18 @@ std::vector<gallery::Job> every_run(const fs::path& scenarios, const gallery::St
   return jobs;
 }
 
-// Makes one figure and prints its wall time, split into simulating (the
-// runs it started: none, where run_in_lanes ran every scene first) and
-// painting.
-void timed(Gallery& g, const std::string& name, const std::function<void()>& make) {
+// Makes one figure and prints its wall time: painting alone, as every run
+// it shows ran before it (gallery::run_in_lanes).
+void timed(const std::string& name, const std::function<void()>& make) {
   const auto start = Clock::now();
-  const double runs_before = g.run_wall();
   make();
-  const double wall = seconds_since(start), runs = g.run_wall() - runs_before;
-  std::cout << name << ": " << fmt(wall) << " s (simulating " << fmt(runs) << " s, painting "
-            << fmt(wall - runs) << " s)" << std::endl;
+  std::cout << name << ": " << fmt(seconds_since(start)) << " s painting" << std::endl;
 }
 
 // Figures 5, 6, 9 and 10 and the series figure: the phi = 20 scene at 8370
 // points, its gravity stage and its slide.
 void stage_figures(Gallery& g, bool quick, const std::string& q) {
-  timed(g, "fig05-vertical-stress.png", [&] {
+  timed("fig05-vertical-stress.png", [&] {
     RunResult& r = g.run_file(kStageScene, true);
     g.figure("fig05-vertical-stress.png",
              "Fig. 5: vertical stress after the gravity stage (phi = 25 deg until the trigger)" + q,
@@ -151,7 +147,7 @@ void stage_figures(Gallery& g, bool quick, const std::string& q) {
              {"sigma_yy, tension positive, at the end of the 5 s gravity stage, " + pts(r)},
              Field::StressYY);
   });
-  timed(g, "fig06-horizontal-displacement.png", [&] {
+  timed("fig06-horizontal-displacement.png", [&] {
     RunResult& r = g.run_file(kStageScene, true);
     g.figure("fig06-horizontal-displacement.png",
              "Fig. 6: horizontal displacement after the gravity stage (phi = 25 deg until the trigger)" + q,
@@ -160,7 +156,7 @@ void stage_figures(Gallery& g, bool quick, const std::string& q) {
               " (the slope faces +x, mirrored from the paper)"},
              Field::DisplacementX);
   });
-  timed(g, "fig09-slide.png", [&] {
+  timed("fig09-slide.png", [&] {
     RunResult& r = g.run_file(kStageScene, true);
     std::vector<std::pair<const RunResult*, const Frame*>> panels;
     std::vector<std::string> caps;
@@ -174,7 +170,7 @@ void stage_figures(Gallery& g, bool quick, const std::string& q) {
                  (quick ? q : " (paper: 40,038; fewer for run time on 2 cores)"),
              panels, caps, Field::DisplacementX);
   });
-  timed(g, "fig10-relative-yield-3s.png", [&] {
+  timed("fig10-relative-yield-3s.png", [&] {
     RunResult& r = g.run_file(kStageScene, true);
     std::string note;
     const Frame* f = state_at(r, 3.0, note);
@@ -184,7 +180,7 @@ void stage_figures(Gallery& g, bool quick, const std::string& q) {
               pts(r) + note},
              Field::RelativeYield);
   });
-  timed(g, "series-paper-slope-phi20.png", [&] {
+  timed("series-paper-slope-phi20.png", [&] {
     g.with_series("series-paper-slope-phi20.png", g.run_file(kStageScene, true));
   });
 }
@@ -201,7 +197,7 @@ bool shown(const std::vector<std::pair<const RunResult*, const Frame*>>& panels,
 
 // Figure 11: the resolution study, the members of its sweep file.
 void resolution_figure(Gallery& g, const gallery::Study& study, const std::string& q) {
-  timed(g, "fig11-resolutions.png", [&] {
+  timed("fig11-resolutions.png", [&] {
     std::vector<std::pair<const RunResult*, const Frame*>> panels;
     std::vector<std::string> caps;
     for (const sweep::Member& m : study.sweep.members) {
@@ -226,7 +222,7 @@ void friction_figures(Gallery& g, const gallery::Study& study, const std::string
   const std::string count = gallery::count_word(study.sweep.members.size());
   std::vector<const RunResult*> runs;
   std::vector<std::string> labels;  // "phi = 25 deg, 8370 points"
-  timed(g, "fig12-friction-angles.png", [&] {
+  timed("fig12-friction-angles.png", [&] {
     std::vector<std::pair<const RunResult*, const Frame*>> panels;
     std::vector<std::string> caps;
     for (const sweep::Member& m : study.sweep.members) {
@@ -240,7 +236,7 @@ void friction_figures(Gallery& g, const gallery::Study& study, const std::string
              panels, caps, Field::DisplacementX);
   });
   const std::string side_by_side = "anim-friction-angles-displacement-x";
-  timed(g, side_by_side + ".mp4/.gif", [&] {
+  timed(side_by_side + ".mp4/.gif", [&] {
     gallery::write_side_by_side(runs, labels,
                                 "The slide at " + count + " friction angles: horizontal displacement" + q,
                                 out / ".work" / side_by_side, out, side_by_side);

@@ -127,7 +127,6 @@ class Gallery {
       fs::remove_all(work);
     }
     const std::lock_guard<std::mutex> lock(mutex_);
-    run_wall_ += r->wall;
     return *runs_.emplace(key, std::move(r)).first->second;
   }
 
@@ -193,10 +192,6 @@ class Gallery {
              fmt(simulation.results()[shared - 1].wall_time) + " s wall when computed)");
   }
 
-  double run_wall() const {
-    const std::lock_guard<std::mutex> lock(mutex_);
-    return run_wall_;
-  }
   std::vector<std::string> failures() const {
     std::vector<std::string> f;
     for (const auto& [key, r] : runs_)
@@ -216,8 +211,7 @@ class Gallery {
   std::map<std::uint64_t, std::unique_ptr<RunResult>> runs_;  // by stage_prefix_key
   std::map<std::uint64_t, std::string> gravity_states_;
   std::unique_ptr<FramePainter> painter_;
-  double run_wall_ = 0;
-  mutable std::mutex mutex_;  // for runs_, gravity_states_ and run_wall_
+  std::mutex mutex_;  // for runs_ and gravity_states_
 };
 
 }  // namespace app::gallery
