@@ -9,25 +9,14 @@
 
 namespace app::gallery {
 
-namespace {
-
-// The key of the stages a scene shares with others (its gravity stage, as
-// Gallery::share_gravity_stage shares it), or of all its stages where it
-// shares none: scenes of one key must run on one lane, in order.
-std::uint64_t shared_key(sim::Scenario s, bool quick) {
-  use_gallery_output(s, quick);
-  const std::size_t shared = sim::reusable_stages(s);
-  return sim::stage_prefix_key(s, shared > 0 ? shared : s.stages.size());
-}
-
-}  // namespace
-
 std::string run_in_lanes(Gallery& g, const std::vector<Job>& jobs) {
   if (jobs.empty()) return "no runs";
   std::vector<std::uint64_t> keys;
   std::size_t finest = 0;
   for (std::size_t k = 0; k < jobs.size(); ++k) {
-    keys.push_back(shared_key(jobs[k].scenario, g.quick()));
+    sim::Scenario s = jobs[k].scenario;
+    use_gallery_output(s, g.quick());  // as Gallery::run will run it
+    keys.push_back(shared_stages_key(s));
     if (jobs[k].scenario.cell_size < jobs[finest].scenario.cell_size) finest = k;
   }
   std::vector<const Job*> first, second;

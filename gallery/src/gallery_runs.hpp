@@ -48,6 +48,15 @@ inline void use_gallery_output(sim::Scenario& s, bool quick) {
   s.output.frame_stages = stages;
 }
 
+// The key of the stages the gallery computes once for every scene whose
+// stages match (sim::reusable_stages: the gravity stage, shared by the
+// friction angles of one resolution), or of all its stages where it shares
+// none. Scenes of one key run on one thread, in order (gallery_lanes.hpp).
+inline std::uint64_t shared_stages_key(const sim::Scenario& s) {
+  const std::size_t shared = sim::reusable_stages(s);
+  return sim::stage_prefix_key(s, shared > 0 ? shared : s.stages.size());
+}
+
 class Gallery {
  public:
   Gallery(fs::path scenarios, fs::path out, bool quick)
@@ -179,7 +188,7 @@ class Gallery {
     const std::size_t shared = sim::reusable_stages(s);
     if (shared == 0) return;
     std::unique_lock<std::mutex> lock(mutex_);
-    std::string& saved = gravity_states_[sim::stage_prefix_key(s, shared)];  // a map's nodes stay put
+    std::string& saved = gravity_states_[shared_stages_key(s)];  // a map's nodes stay put
     lock.unlock();
     if (saved.empty()) {
       observer.save_after(shared, &saved);
