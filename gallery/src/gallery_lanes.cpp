@@ -2,7 +2,7 @@
 
 #include <omp.h>
 
-#include <atomic>
+#include <exception>
 #include <future>
 
 #include "sim/physics/team.hpp"
@@ -23,11 +23,18 @@ std::string run_in_lanes(Gallery& g, const std::vector<Job>& jobs) {
   for (std::size_t k = 0; k < jobs.size(); ++k)
     (keys[k] == keys[finest] ? first : second).push_back(&jobs[k]);
   const int threads = omp_get_max_threads();
-  std::atomic<bool> stop{false};
+  // A lane that fails stops the other's run between two steps, so its error
+  // is reported at once, not after the other lane's run (up to a minute and
+  // a half for the finest scene) has ended.
   const auto lane = [&](const std::vector<const Job*>& list) {
-    for (const Job* j : list) {
-      if (stop) return;
-      g.run(j->scenario, j->animate);
+    try {
+      for (const Job* j : list)
+        if (!g.stopping()) g.run(j->scenario, j->animate);
+    } catch (const RunsStopped&) {
+      // the other lane's error is the one to report
+    } catch (...) {
+      g.stop_runs();
+      throw;
     }
   };
   if (threads < 2 || second.empty()) {
@@ -38,21 +45,20 @@ std::string run_in_lanes(Gallery& g, const std::vector<Job>& jobs) {
   std::future<void> beside = std::async(std::launch::async, [&] {
     omp_set_num_threads(1);  // this thread's own setting: the first lane keeps its own
     const sim::CoreHold hold(1);
-    try {
-      lane(second);
-    } catch (...) {
-      stop = true;
-      throw;
-    }
+    lane(second);
   });
+  std::exception_ptr failed;
   try {
     lane(first);
   } catch (...) {
-    stop = true;
-    beside.wait();
-    throw;
+    failed = std::current_exception();
   }
-  beside.get();
+  try {
+    beside.get();
+  } catch (...) {
+    if (!failed) failed = std::current_exception();
+  }
+  if (failed) std::rethrow_exception(failed);
   return "two lanes: h = " + fmt(jobs[finest].scenario.cell_size, 3) + " m on " +
          std::to_string(threads) + " threads, one less while the other scenes ran on one";
 }

@@ -32,8 +32,9 @@ struct Job {
 // Runs every job through g.run(), in the order given within each lane; a
 // later g.run() of any of them returns the kept result. One lane, in order,
 // where the process has one thread or every job shares the finest one's
-// gravity stage (every scene under --quick). Returns what it printed of the
-// lanes, for the gallery's timing line.
+// gravity stage (every scene under --quick). A run that throws stops the
+// other lane's run at its next step and is rethrown. Returns what it
+// printed of the lanes, for the gallery's timing line.
 std::string run_in_lanes(Gallery& g, const std::vector<Job>& jobs);
 
 }  // namespace app::gallery

@@ -4,10 +4,12 @@
 // gravity stage the next scene can start from.
 #pragma once
 
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <iostream>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -29,11 +31,19 @@ inline std::size_t field_index(Field f) {
 // Slide times (s into the slide) the figures show.
 const std::vector<double> kSlideTimes = {3, 4, 8, 12, 16};
 
+// Thrown between two steps of a run once `stop` is set (Gallery::stop_runs):
+// a run on the other lane (gallery_lanes.hpp) failed, and its error is the
+// one the gallery reports, without waiting for this run to end.
+struct RunsStopped : std::runtime_error {
+  RunsStopped() : std::runtime_error("stopped: a run on the other lane failed") {}
+};
+
 class GalleryObserver : public sim::Observer {
  public:
   // `series` (may be null) records the run's time series.
-  GalleryObserver(RunResult& r, FrameRecorder* recorder, SeriesRecorder* series = nullptr)
-      : r_(r), recorder_(recorder), series_(series) {}
+  GalleryObserver(RunResult& r, const std::atomic<bool>& stop, FrameRecorder* recorder,
+                  SeriesRecorder* series = nullptr)
+      : r_(r), stop_(stop), recorder_(recorder), series_(series) {}
 
   void stage_begins(const sim::Simulation& sim, const sim::StageSpec& stage) override {
     if (series_) series_->stage_begins(sim, stage);
@@ -76,6 +86,7 @@ class GalleryObserver : public sim::Observer {
   }
 
   void progress(const sim::Simulation& sim, const sim::StageSpec& stage, long steps) override {
+    if (stop_.load(std::memory_order_relaxed)) throw RunsStopped();
     if (series_) series_->progress(sim, stage);
     if (std::chrono::steady_clock::now() - last_ < std::chrono::seconds(10)) return;
     last_ = std::chrono::steady_clock::now();
@@ -87,6 +98,7 @@ class GalleryObserver : public sim::Observer {
 
  private:
   RunResult& r_;
+  const std::atomic<bool>& stop_;
   FrameRecorder* recorder_;
   SeriesRecorder* series_;
   std::size_t save_after_ = 0;

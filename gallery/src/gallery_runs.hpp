@@ -4,6 +4,7 @@
 // stages match (as --state-cache does, in memory).
 #pragma once
 
+#include <atomic>
 #include <chrono>
 #include <cstdint>
 #include <filesystem>
@@ -99,11 +100,15 @@ class Gallery {
     std::ostringstream running;
     running << "running " << s.name << " (" << r->points << " points, h = " << s.cell_size << " m)";
     log_line(running.str());
-    GalleryObserver observer(*r, recorder.get(), series.get());
+    GalleryObserver observer(*r, stopping_, recorder.get(), series.get());
     share_gravity_stage(simulation, observer);
     try {
       simulation.run(observer);
     } catch (const sim::ScenarioError&) {
+      throw;
+    } catch (const RunsStopped&) {
+      log_line("  " + s.name + ": stopped at t = " + fmt(simulation.time(), 2) +
+               " s, as a run on the other lane failed");
       throw;
     } catch (const std::exception& e) {
       // A failed run (e.g. a point thrown out of the grid) still shows its
@@ -209,6 +214,12 @@ class Gallery {
   }
   bool quick() const { return quick_; }
 
+  // Stops every run of this gallery between two steps (RunsStopped), and
+  // keeps later ones from starting: for a run on one lane that failed while
+  // the other lane's run goes on (gallery_lanes.hpp).
+  void stop_runs() { stopping_ = true; }
+  bool stopping() const { return stopping_; }
+
  private:
   FramePainter& painter() {
     if (!painter_) painter_ = std::make_unique<FramePainter>(960, 300);
@@ -221,6 +232,7 @@ class Gallery {
   std::map<std::uint64_t, std::string> gravity_states_;
   std::unique_ptr<FramePainter> painter_;
   std::mutex mutex_;  // for runs_ and gravity_states_
+  std::atomic<bool> stopping_{false};
 };
 
 }  // namespace app::gallery
