@@ -169,6 +169,7 @@ TEST(Gallery, TwoLanesPaintWhatOneLanePaints) {
     const std::string printed = testing::internal::GetCapturedStdout();
     EXPECT_EQ(status, app::kExitOk);
     EXPECT_NE(printed.find(expected), std::string::npos) << printed;
+    EXPECT_NE(printed.find("); processor time "), std::string::npos) << printed;
   };
   const int threads = omp_get_max_threads();
   gallery_on(1, "(one lane)");
