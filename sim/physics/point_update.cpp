@@ -42,7 +42,7 @@ struct MaterialLanesCache {
                            const SurfaceArrays* own) {
     std::uint64_t now;
     std::memcpy(&now, &materials, sizeof now);
-    if (!held || now != kinds) fill(w, now, q, own);
+    if (!held || now != kinds) fill(w, now, own);
     const auto own_lanes = [&](const std::vector<double>& a) {
       return lanes_at<Lane8>(a.data(), q, run);
     };
@@ -50,32 +50,43 @@ struct MaterialLanesCache {
     return lanes;
   }
 
-  // Out of line and marked cold: it runs once a band in a scene of one
-  // soil, but inlined into update_eight_stresses it shaped that function's
-  // registers, and 1,105 of its 3,317 instructions moved to or from the
-  // stack; without it 566 of 2,468 (objdump; the fill itself is 319
-  // instructions). Stress and forces, one thread, least/median of 8 in turns
-  // (issue 17, thirty-eighth pass): slope 26.5/27.1 -> 25.5/25.9 ns a
-  // point, column 29.8/30.1 -> 29.1/29.6; a random field's 36.0/37.1 ->
-  // 36.1/37.4 (4 rounds).
-  __attribute__((noinline, cold)) void fill(const World& w, std::uint64_t now, const int q[8],
+  // Out of line and marked cold: inlined into update_eight_stresses it
+  // shaped that function's registers, and 1,105 of its 3,317 instructions
+  // moved to or from the stack; without it 566 of 2,468 (objdump). Stress
+  // and forces, one thread, least/median of 8 in turns (issue 17,
+  // thirty-eighth pass): slope 26.5/27.1 -> 25.5/25.9 ns a point, column
+  // 29.8/30.1 -> 29.1/29.6; a random field's 36.0/37.1 -> 36.1/37.4.
+  //
+  // It runs once a band, and again wherever the group's materials differ
+  // from the group before: on the 8,370-point slope with its house, for 3.1
+  // % of the groups of a whole `landslide run` (733,664 of 23.9 M, 59 % of
+  // them of one material), where perf put 3.6 % of the run in it while it
+  // put every lane's 21 constants in one by one. Built from broadcasts, the
+  // first lane's material everywhere and then each other material where its
+  // points are, a lane holds the same double either way.
+  __attribute__((noinline, cold)) void fill(const World& w, std::uint64_t now,
                                             const SurfaceArrays* own) {
     kinds = now;
     held = true;
-    const MaterialConstants* m[8];
-    const MohrCoulomb* s[8];
-    // Looked up from the points again, not from the group's material bytes:
-    // taking the bytes out of the vector made the random-field case 4 ns per
-    // point slower.
-    for (int l = 0; l < 8; ++l) {
-      m[l] = &w.materials[w.points.material[q[l]]];
-      s[l] = &m[l]->mohr_coulomb;
+    Bytes8 bytes;
+    std::memcpy(&bytes, &now, sizeof bytes);
+    const Int8 of = __builtin_convertvector(bytes, Int8);
+    set_where(Int8{} - 1, w.materials[bytes[0]], own);
+    for (int l = 1; l < 8; ++l) {
+      bool first = true;  // the first lane of its material
+      for (int k = 0; k < l; ++k) first = first && bytes[k] != bytes[l];
+      if (first) set_where(of == bytes[l], w.materials[bytes[l]], own);
     }
-    lanes.lambda = lanes_of(m, &MaterialConstants::lambda);
-    lanes.shear = lanes_of(m, &MaterialConstants::shear);
-    lanes.critical_density = lanes_of(m, &MaterialConstants::critical_density);
-    for (int l = 0; l < 8; ++l) lanes.plastic[l] = m[l]->plastic ? -1 : 0;
-    if (!own) lanes.mohr_coulomb = surface_lanes(s);
+  }
+
+  // Material m's constants in the lanes `where` is set.
+  void set_where(const Int8& where, const MaterialConstants& m, const SurfaceArrays* own) {
+    const auto put = [&](Lane8& lanes, double v) { lanes = where ? splat<Lane8>(v) : lanes; };
+    put(lanes.lambda, m.lambda);
+    put(lanes.shear, m.shear);
+    put(lanes.critical_density, m.critical_density);
+    lanes.plastic = where ? Int8{} - (m.plastic ? 1 : 0) : lanes.plastic;
+    if (!own) pair_surface_constants(lanes.mohr_coulomb, m.mohr_coulomb, put);
   }
 };
 
