@@ -28,15 +28,6 @@ struct MohrCoulombLanes {
   Principal3Of<Lane8> plane_corrector, side1, side2, project1, project2;
 };
 
-// Lane l holds `field` of *from[l]: the one-point constants of eight points
-// (surfaces, materials) gathered into lanes.
-template <class S>
-Lane8 lanes_of(const S* const from[8], double S::*field) {
-  Lane8 v;
-  for (int l = 0; l < 8; ++l) v[l] = from[l]->*field;
-  return v;
-}
-
 // Lane l holds the constants of *surfaces[l].
 inline MohrCoulombLanes surface_lanes(const MohrCoulomb* const surfaces[8]) {
   MohrCoulombLanes c;
