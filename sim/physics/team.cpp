@@ -2,10 +2,12 @@
 
 #include <dirent.h>
 #include <omp.h>
+#include <time.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <cstdio>
 #include <string>
 
@@ -53,7 +55,45 @@ int own_runnable_threads() {
   return running;
 }
 
+// CPU time every core has spent on programs (user, nice, system, irq,
+// softirq, and steal: time the hypervisor gave to others), from the first
+// line of /proc/stat, seconds; -1 where it cannot be read.
+double all_cpu_seconds() {
+  std::FILE* f = std::fopen("/proc/stat", "r");
+  if (!f) return -1;
+  unsigned long long t[8] = {};
+  const int read = std::fscanf(f, "cpu %llu %llu %llu %llu %llu %llu %llu %llu", &t[0], &t[1],
+                               &t[2], &t[3], &t[4], &t[5], &t[6], &t[7]);
+  std::fclose(f);
+  const long ticks = sysconf(_SC_CLK_TCK);
+  if (read != 8 || ticks <= 0) return -1;
+  return static_cast<double>(t[0] + t[1] + t[2] + t[5] + t[6] + t[7]) / static_cast<double>(ticks);
+}
+
+double own_cpu_seconds() {
+  timespec t{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
 }  // namespace
+
+int busy_cores(double others) {
+  return std::max(0, static_cast<int>(std::floor(others + 1.0 - kBusyShare)));
+}
+
+int averaged_free_cores(CpuUsage& since) {
+  const CpuUsage now{all_cpu_seconds(), own_cpu_seconds(), std::chrono::steady_clock::now()};
+  const CpuUsage before = since;
+  since = now;
+  const double seconds = std::chrono::duration<double>(now.at - before.at).count();
+  const long cores = sysconf(_SC_NPROCESSORS_ONLN);
+  if (now.all < 0 || before.all < 0 || now.at - before.at < kLeastAverage || cores < 1) return -1;
+  const double others = ((now.all - before.all) - (now.own - before.own)) / seconds;
+  const int asked = omp_get_max_threads();
+  const int taken = busy_cores(others) + held.load(std::memory_order_relaxed);
+  return static_cast<int>(std::clamp<long>(cores - taken, 1, asked));
+}
 
 int free_cores() {
   const int asked = omp_get_max_threads();
@@ -87,7 +127,16 @@ int team_size(Team& team) {
   const auto now = std::chrono::steady_clock::now();
   const auto wait = team.check_soon ? kConfirm : kRecount;
   if (asked != team.asked || now - team.counted >= wait) {
-    team.threads = settle_team(team, asked, free_cores());
+    // A team's first count and its confirmation are instants; the counts
+    // after them read the interval since the count before.
+    const bool instant = asked != team.asked || team.check_soon;
+    const int averaged = averaged_free_cores(team.usage);
+    if (instant || averaged < 0) {
+      team.threads = settle_team(team, asked, free_cores());
+    } else {
+      team.threads = team.last_count = averaged;
+      team.check_soon = false;
+    }
     team.counted = now;
   }
   return team.threads;

@@ -21,6 +21,16 @@
 // this rule; with a busy loop on one core 2 threads still ran at 0.96-0.99
 // of 1 thread (issue 17, nineteenth pass, bench/README.md).
 //
+// Those counts still see tasks of a moment. On this project's machine (a
+// Firecracker VM) /proc/loadavg counted one runnable task more than /proc
+// held in state R at many counts beside a 6.5 M-point step, and the rule
+// above put 4 to 8 of the 20 steps of `throughput --sizes`' 2-thread run at
+// that size on one thread, at 60 to 105 ns a point-step where two threads
+// took 33 to 50. So every count after a team's first (and its confirmation)
+// reads the CPU time other programs used since the count before instead
+// (averaged_free_cores): a busy loop uses a core's worth of it, a task of a
+// moment next to nothing. Also a departure of this program's own.
+//
 // The first count of a team has no count before it, and is taken as it is:
 // a core found busy there is given up at once and counted again kConfirm
 // later, in case the process was short-lived. Settled with the threads
@@ -40,6 +50,23 @@ constexpr std::chrono::milliseconds kRecount{200};
 // How soon a count that found a core busy is checked by the next: the team
 // keeps the core this long while a new process is confirmed, not kRecount.
 constexpr std::chrono::milliseconds kConfirm{20};
+// The shortest interval an averaged count reads: /proc/stat counts CPU time
+// in ticks of 10 ms, so that a count over 100 ms on 2 cores is good to about
+// 0.1 of a core.
+constexpr std::chrono::milliseconds kLeastAverage{100};
+// The share of a core that other programs must use on average over a count's
+// interval for it to count as theirs. On this project's 2-core machine, over
+// 200 ms: 2 threads alone read -0.03 to 0.10 cores used by others; beside a
+// busy loop of the same session, which takes a third of each core, 0.44 to
+// 1.00; 1 thread beside it 0.95 to 1.09 (issue 17, forty-third pass).
+constexpr double kBusyShare = 0.35;
+
+// The CPU time every program and this process had used at one instant: the
+// start of the interval an averaged count reads.
+struct CpuUsage {
+  double all = -1, own = 0;  // seconds; all < 0: none taken yet
+  std::chrono::steady_clock::time_point at{};
+};
 
 struct Team {
   int asked = 0;    // omp_get_max_threads() when last counted
@@ -47,6 +74,7 @@ struct Team {
   int last_count = 0;  // free_cores() at the count before
   bool check_soon = false;  // count again after kConfirm, not kRecount
   std::chrono::steady_clock::time_point counted{};
+  CpuUsage usage;  // at the last count
 };
 
 // Online cores less the runnable threads of other processes (the
@@ -55,6 +83,17 @@ struct Team {
 // omp_get_max_threads(). Where /proc cannot be read, omp_get_max_threads()
 // less the cores held.
 int free_cores();
+
+// The cores other programs take, from the cores' worth of CPU time they
+// used on average (kBusyShare below): 0.3 is none, 0.67 one.
+int busy_cores(double others);
+
+// Online cores less the cores other programs kept busy on average since
+// `since` (the CPU time of every core in /proc/stat less this process's),
+// less the cores held, at least 1 and at most omp_get_max_threads(); -1
+// where /proc/stat cannot be read or less than kLeastAverage has passed.
+// `since` becomes now.
+int averaged_free_cores(CpuUsage& since);
 
 // The team's size after a count that found `free` of `asked` cores: the
 // larger of it and the count before (see above), or `free` itself where the

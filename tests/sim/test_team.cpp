@@ -14,6 +14,21 @@
 
 namespace {
 
+// A process that spins until stopped; -1 where it cannot be forked.
+pid_t start_spinning() {
+  const pid_t busy = fork();
+  if (busy == 0) {
+    volatile unsigned long spin = 0;
+    for (;;) ++spin;
+  }
+  return busy;
+}
+
+void stop(pid_t busy) {
+  kill(busy, SIGKILL);
+  waitpid(busy, nullptr, 0);
+}
+
 TEST(Team, OneThreadAskedForIsOne) {
   omp_set_num_threads(1);
   sim::Team team;
@@ -33,18 +48,44 @@ TEST(Team, ABusyProcessTakesACore) {
   const long cores = sysconf(_SC_NPROCESSORS_ONLN);
   if (cores < 2) GTEST_SKIP() << "one core: nothing to give up";
   omp_set_num_threads(static_cast<int>(cores));
-  const pid_t busy = fork();
+  const pid_t busy = start_spinning();
   ASSERT_GE(busy, 0);
-  if (busy == 0) {
-    volatile unsigned long spin = 0;
-    for (;;) ++spin;
-  }
   std::this_thread::sleep_for(std::chrono::milliseconds(50));
   const int free = sim::free_cores();
-  kill(busy, SIGKILL);
-  waitpid(busy, nullptr, 0);
+  stop(busy);
   EXPECT_LT(free, cores) << "a process spinning beside this one left all " << cores
                          << " cores counted free";
+}
+
+// The averaged count (team.hpp): a process that spins through the interval
+// used a core's worth of CPU time, and takes a core.
+TEST(Team, ABusyProcessTakesACoreOnAverage) {
+  const long cores = sysconf(_SC_NPROCESSORS_ONLN);
+  if (cores < 2) GTEST_SKIP() << "one core: nothing to give up";
+  omp_set_num_threads(static_cast<int>(cores));
+  sim::CpuUsage since;
+  EXPECT_EQ(sim::averaged_free_cores(since), -1) << "no interval before the first reading";
+  EXPECT_EQ(sim::averaged_free_cores(since), -1) << "an interval shorter than kLeastAverage";
+  const pid_t busy = start_spinning();
+  ASSERT_GE(busy, 0);
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  const int free = sim::averaged_free_cores(since);
+  stop(busy);
+  EXPECT_GE(free, 1);
+  EXPECT_LT(free, cores) << "a process spinning for 300 ms left all " << cores
+                         << " cores counted free";
+}
+
+// Other programs' average use, in cores, to the cores they take: a core
+// only from kBusyShare of one on.
+TEST(Team, BusyCoresFromAverageUse) {
+  EXPECT_EQ(sim::busy_cores(-0.05), 0) << "round-off of the ticks";
+  EXPECT_EQ(sim::busy_cores(0.10), 0) << "tasks of a moment";
+  EXPECT_EQ(sim::busy_cores(sim::kBusyShare - 0.01), 0);
+  EXPECT_EQ(sim::busy_cores(sim::kBusyShare), 1);
+  EXPECT_EQ(sim::busy_cores(0.67), 1) << "a busy loop sharing two cores with two threads";
+  EXPECT_EQ(sim::busy_cores(1.0), 1) << "a busy loop on a core of its own";
+  EXPECT_EQ(sim::busy_cores(1.0 + sim::kBusyShare), 2);
 }
 
 // A core this process holds for other work (the gallery's second lane) is
