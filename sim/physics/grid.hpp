@@ -26,6 +26,9 @@ struct FrictionWall {
   double line = 0;
 };
 
+// Node (i, j)'s index in a grid of `stride` nodes a row.
+inline int node_index(int i, int j, int stride) { return j * stride + i; }
+
 struct Grid {
   double origin_x = 0, origin_y = 0;  // position of node (0, 0)
   double h = 0;                       // cell size
@@ -75,7 +78,7 @@ struct Grid {
   // so it never belongs to a row another thread is writing.
   int stride = 0;
 
-  int node(int i, int j) const { return j * stride + i; }
+  int node(int i, int j) const { return node_index(i, j, stride); }
   // Row j's span: [span_of_row(j)[0], span_of_row(j)[1]) along i.
   const int* span_of_row(int j) const { return &row_span[2 * (j - j_begin)]; }
   int* span_of_row(int j) { return &row_span[2 * (j - j_begin)]; }

@@ -230,9 +230,8 @@ __attribute__((noinline)) void update_eight_stresses(World& w, const int* p, int
 // 34.4/35.8 to 29.7/30.6 ns a point on the 66,787-point slope (one thread,
 // least/median of 8 in turns; the force scatter alone 32.3/34.5). Rounded
 // otherwise, so the bits changed (bench/README.md).
-void scatter_point_force(World& w, int p, const UpdatedLanes& u, int l, const Vec2& gravity,
-                         NodeSumsSideBySide& sums) {
-  const StencilWeights& st = w.weights[p];
+void scatter_point_force(const StencilWeights& st, const UpdatedLanes& u, int l,
+                         const Vec2& gravity, NodeSumsSideBySide& sums) {
   const double V = u.volume[l];
   const double sxx = u.sxx[l], syy = u.syy[l], sxy = u.sxy[l];
   const double mgx = u.mass[l] * gravity[0], mgy = u.mass[l] * gravity[1];
@@ -242,7 +241,7 @@ void scatter_point_force(World& w, int p, const UpdatedLanes& u, int l, const Ve
   const Lane8& rows = u.slopes.x_rows[l / 2];
   const Lane8 wx = twice(x_weights(st)), dx = twice(l % 2 ? high4(rows) : low4(rows));
   const Lane8 along_wy = fused(first * dx, -V, wx * mg), along_dy = (-V * second) * wx;
-  sums.hold(w.grid.node(st.base_i, st.base_j));
+  sums.hold(node_index(st.base_i, st.base_j, sums.stride));
   for (int b = 0; b < 3; ++b)
     sums.rows[b] = fused(along_wy, st.wy[b], fused(along_dy, u.dy[b][l], sums.rows[b]));
 }
@@ -279,15 +278,22 @@ void update_stress_and_forces(World& w, const StepInput& in) {
   scatter_own_bands(w, BandMark::Forces, BandMark::Walls, [&](int band) {
     MaterialLanesCache cache;
     NodeSumsSideBySide forces{w.grid.fx.data(), w.grid.fy.data(), w.grid.stride};
+    // Locals, not read through w: after the stress update's call and the
+    // scatter's stores clang read the order, the stencils and the grid's
+    // stride again at every point (the scatter's loop 84.7 -> 81.1
+    // instructions a point-step on the 8,370-point slope, bench/instructions.sh,
+    // issue 17, forty-third pass).
+    const int* const order = w.order.data();
+    const StencilWeights* const weights = w.weights.data();
     double total = 0;
     const int end = w.band_start[band + 1];
     for (int s = w.band_start[band]; s < end; s += 8) {
       const int count = std::min(8, end - s);
       UpdatedLanes updated;
-      update_eight_stresses(w, &w.order[s], count, in.dt, own, cache, updated);
+      update_eight_stresses(w, &order[s], count, in.dt, own, cache, updated);
       for (int l = 0; l < count; ++l) {
         total += updated.work[l];
-        scatter_point_force(w, w.order[s + l], updated, l, in.gravity, forces);
+        scatter_point_force(weights[order[s + l]], updated, l, in.gravity, forces);
       }
     }
     forces.flush();
