@@ -14,8 +14,8 @@
 // picks that variant on processors with FMA and another, which rounds some
 // arguments differently in the last bit, on those without; exp_lanes does the
 // same arithmetic on every machine (std::fma is exact in software). Lanes
-// outside the table's range, |x| < 2^-54 or |x| >= 512 (0, infinities,
-// NaN, overflow), take std::exp itself.
+// with |x| < 2^-54 (0 among them) take 1 + x, as glibc's exp does; those
+// with |x| >= 512 (infinities, NaN, overflow) take std::exp itself.
 #pragma once
 
 #include <cmath>
@@ -114,8 +114,18 @@ inline Lane8 exp_lanes(const Lane8& x) {
   const Bits8 top = same_bits<Bits8>(x) >> 52 & 0x7ff;
   const Int8 outside = top - 0x3c9 > 0x3e;  // |x| < 2^-54 or |x| >= 512, or not finite
   if (every(outside == 0)) return y;  // one test for the eight lanes' eight branches
+  // |x| < 2^-54: glibc's exp returns 1 + x there (rounded, 1 itself but for
+  // the sign of the rounding), and so does this, without the call. Such
+  // strain increments are common: soil at rest, or moving as a rigid body,
+  // whose nodal velocities' gradients cancel to round-off, and the lanes'
+  // calls of std::exp took 6.3 instructions a point-step of the step's 586
+  // on the 66,787-point slope early in its gravity stage (callgrind,
+  // bench/instructions.sh, issue 17, forty-third pass).
+  const Int8 tiny = top < 0x3c9;
+  y = tiny ? 1.0 + x : y;
+  if (every((outside & ~tiny) == 0)) return y;
   for (int l = 0; l < 8; ++l)
-    if (outside[l]) y[l] = std::exp(x[l]);
+    if (outside[l] && !tiny[l]) y[l] = std::exp(x[l]);
   return y;
 }
 

@@ -58,6 +58,26 @@ TEST(ExpLanes, SameBitsAsStdExpForStrainTraces) {
   EXPECT_EQ(count_differences(xs), 0);
 }
 
+// |x| < 2^-54, which exp_lanes takes as 1 + x without calling std::exp:
+// the strain increments of soil at rest, zeros among them, in groups mixed
+// with ordinary arguments.
+TEST(ExpLanes, SameBitsAsStdExpForTinyArguments) {
+  if (!libm_exp_is_the_fma_variant())
+    GTEST_SKIP() << "glibc's exp here is not its x86-64 FMA variant";
+  std::mt19937_64 rng(13);
+  std::uniform_real_distribution<double> mantissa(-1.0, 1.0);
+  std::uniform_int_distribution<int> power(-1080, -50);
+  std::vector<double> xs;
+  for (int i = 0; i < 1'000'000; ++i) {
+    const int kind = static_cast<int>(rng() % 8);
+    xs.push_back(kind == 0   ? 0.0
+                 : kind == 1 ? -0.0
+                 : kind == 2 ? mantissa(rng) * 1e-3  // an ordinary lane beside tiny ones
+                             : std::ldexp(mantissa(rng), power(rng)));
+  }
+  EXPECT_EQ(count_differences(xs), 0);
+}
+
 TEST(ExpLanes, SameBitsAsStdExpOverTheWholeRange) {
   if (!libm_exp_is_the_fma_variant())
     GTEST_SKIP() << "glibc's exp here is not its x86-64 FMA variant";
