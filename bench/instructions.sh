@@ -3,9 +3,9 @@
 # valgrind's callgrind on bench/phases, one thread. The count is the same
 # from run to run of one binary, where this machine's timings of one binary
 # move by a quarter from minute to minute: a change that cuts instructions
-# from a phase limited by them (the slope's phases run at about four
-# instructions a cycle) shows here in one run, where a timing needs rounds
-# in turns (bench/README.md, "instructions.sh"). A bench: it prints figures
+# from the slope's step (about 600 a point-step in 52 to 63 ns on one
+# thread) shows here in one run, where a timing needs rounds in turns
+# (bench/README.md, "instructions.sh"). A bench: it prints figures
 # and fails only when it cannot count.
 #
 # bench/phases runs 30 untimed steps and a scene's set-up before its STEPS

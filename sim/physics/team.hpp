@@ -24,9 +24,9 @@
 // Those counts still see tasks of a moment. On this project's machine (a
 // Firecracker VM) /proc/loadavg counted one runnable task more than /proc
 // held in state R at many counts beside a 6.5 M-point step, and the rule
-// above put 4 to 8 of the 20 steps of `throughput --sizes`' 2-thread run at
-// that size on one thread, at 60 to 105 ns a point-step where two threads
-// took 33 to 50. So every count after a team's first (and its confirmation)
+// above put 5 to 10 of the 20 steps of `throughput --sizes`' 2-thread run at
+// that size on one thread (three runs), at 60 to 106 ns a point-step where
+// two threads took 33 to 61. So every count after a team's first (and its confirmation)
 // reads the CPU time other programs used since the count before instead
 // (averaged_free_cores): a busy loop uses a core's worth of it, a task of a
 // moment next to nothing. Also a departure of this program's own.
