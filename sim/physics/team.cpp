@@ -76,6 +76,18 @@ double own_cpu_seconds() {
   return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
 }
 
+// The online cores less `others` that other programs keep busy and less the
+// cores held, at least 1 and at most omp_get_max_threads(). With `others`
+// unknown (negative) or the online cores unknown: the threads asked for less
+// the cores held, as far as 1.
+int cores_left(int others) {
+  const int asked = omp_get_max_threads();
+  const long cores = sysconf(_SC_NPROCESSORS_ONLN);
+  const int kept = held.load(std::memory_order_relaxed);
+  if (others < 0 || cores < 1) return std::clamp(asked - kept, 1, asked);
+  return static_cast<int>(std::clamp<long>(cores - others - kept, 1, asked));
+}
+
 }  // namespace
 
 int busy_cores(double others) {
@@ -87,22 +99,15 @@ int averaged_free_cores(CpuUsage& since) {
   const CpuUsage before = since;
   since = now;
   const double seconds = std::chrono::duration<double>(now.at - before.at).count();
-  const long cores = sysconf(_SC_NPROCESSORS_ONLN);
-  if (now.all < 0 || before.all < 0 || now.at - before.at < kLeastAverage || cores < 1) return -1;
+  if (now.all < 0 || before.all < 0 || now.at - before.at < kLeastAverage) return -1;
   const double others = ((now.all - before.all) - (now.own - before.own)) / seconds;
-  const int asked = omp_get_max_threads();
-  const int taken = busy_cores(others) + held.load(std::memory_order_relaxed);
-  return static_cast<int>(std::clamp<long>(cores - taken, 1, asked));
+  return cores_left(busy_cores(others));
 }
 
 int free_cores() {
-  const int asked = omp_get_max_threads();
   const int all = runnable_tasks(), own = own_runnable_threads();
-  const long cores = sysconf(_SC_NPROCESSORS_ONLN);
-  const int kept = held.load(std::memory_order_relaxed);
-  if (all < 0 || own < 0 || cores < 1) return std::clamp(asked - kept, 1, asked);
-  const int others = std::max(0, all - own) + kept;
-  return static_cast<int>(std::clamp<long>(cores - others, 1, asked));
+  if (all < 0 || own < 0) return cores_left(-1);
+  return cores_left(std::max(0, all - own));
 }
 
 int settle_team(Team& team, int asked, int free) {

@@ -26,10 +26,11 @@
 // held in state R at many counts beside a 6.5 M-point step, and the rule
 // above put 5 to 10 of the 20 steps of `throughput --sizes`' 2-thread run at
 // that size on one thread (three runs), at 60 to 106 ns a point-step where
-// two threads took 33 to 61. So every count after a team's first (and its confirmation)
-// reads the CPU time other programs used since the count before instead
-// (averaged_free_cores): a busy loop uses a core's worth of it, a task of a
-// moment next to nothing. Also a departure of this program's own.
+// two threads took 33 to 61. So every count after a team's first (and its
+// confirmation) reads the CPU time other programs used since the count
+// before instead (averaged_free_cores): a busy loop uses a core's worth of
+// it, a task of a moment next to nothing. Also a departure of this program's
+// own.
 //
 // The first count of a team has no count before it, and is taken as it is:
 // a core found busy there is given up at once and counted again kConfirm
