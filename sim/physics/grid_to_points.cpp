@@ -43,38 +43,43 @@ __attribute__((noinline, cold)) double walled_squared(const Grid& g,
   return wx * wx + wy * wy;
 }
 
-// The 3x3 nodes of one base node held in registers, two arrays side by
-// side: ax in the low and ay in the high halves of `accel`, vx and vy of
-// `velocity`. Points come in runs of one base node (locate.cpp), so a run
-// reads its nodes once, where each pair of points read its own: G2P took
-// 12.0 ns a point on the 66,787-point slope, 11.3 held (one thread, issue
-// 17, twenty-ninth pass).
-struct HeldNodes {
-  int base = -1;
-  Lane8 accel[3], velocity[3];
+// The base node of the run of points being gathered (points come in runs of
+// one base node, locate.cpp), and whether a wall acts on a node of its
+// stencil (Grid::reaches_walls): tested once a run, not a point at a time
+// from its stencil in the band sums' loop.
+struct RunBase {
+  int node = -1;
+  bool walled = false;
 
-  void hold(const Grid& g, int at) {
-    if (at == base) return;
-    base = at;
-    for (int b = 0; b < 3; ++b) {
-      accel[b] = load4x2_of(g.ax.data(), g.ay.data(), at + b * g.stride);
-      velocity[b] = load4x2_of(g.vx.data(), g.vy.data(), at + b * g.stride);
-    }
+  void move_to(const Grid& g, const StencilWeights& st) {
+    const int at = g.node(st.base_i, st.base_j);
+    if (at == node) return;
+    node = at;
+    walled = g.reaches_walls(st.base_i, st.base_j);
   }
 };
 
 // One point's sums S_ip a_i (low halves of `accel`) and S_ip v_i (of
-// `velocity`), before the three nodes of a row are added.
+// `velocity`), before the three nodes of a row are added; bit `bit` of
+// `walled` set where a wall acts on its stencil. The nodes are read at every
+// point, as the FMAs' memory operands. Held in registers through a run of
+// one base node (from the twenty-ninth pass of issue 17), they took twelve
+// of AVX2's sixteen and the loop moved others to and from the stack: G2P
+// went from 130.3 to 116.9 instructions a point-step on the 66,787-point
+// slope without them (bench/instructions.sh, forty-fourth pass).
 __attribute__((always_inline)) inline void gather_one(const Grid& g, const StencilWeights& st,
-                                                      HeldNodes& held, Lane8& accel,
-                                                      Lane8& velocity) {
-  held.hold(g, g.node(st.base_i, st.base_j));
+                                                      RunBase& run, Lane8& accel,
+                                                      Lane8& velocity, unsigned& walled,
+                                                      int bit) {
+  run.move_to(g, st);
+  walled |= unsigned(run.walled) << bit;
   const Lane8 wx = twice(x_weights(st));
   accel = velocity = Lane8{};
   for (int b = 0; b < 3; ++b) {
     const Lane8 S = wx * st.wy[b];
-    accel = fused(S, held.accel[b], accel);
-    velocity = fused(S, held.velocity[b], velocity);
+    const int row = run.node + b * g.stride;
+    accel = fused(S, load4x2_of(g.ax.data(), g.ay.data(), row), accel);
+    velocity = fused(S, load4x2_of(g.vx.data(), g.vy.data(), row), velocity);
   }
 }
 
@@ -116,14 +121,44 @@ struct FastestByMaterial {
   }
 };
 
+// The band's sums of four terms, `sums` = {a, b, c, d}, each added point by
+// point in the band's order: points q[0..count) of a group, their terms
+// a..d one a lane. Each point's four terms are put side by side (two
+// unpacks and a lane swap a pair of points), so one addition a point
+// does the four sums' additions in the order they had one by one. Added
+// from four arrays a point at a time, with the walls' test of each point
+// beside them (now RunBase's), that loop took 22 instructions a point; G2P
+// went from 135.5 to 130.3 instructions a point-step on the 66,787-point
+// slope (bench/instructions.sh, issue 17, forty-fourth pass).
+__attribute__((always_inline)) inline void add_in_point_order(Lane4& sums, int count,
+                                                              const Lane8& a, const Lane8& b,
+                                                              const Lane8& c, const Lane8& d) {
+  const Lane8 ab_even = __builtin_shufflevector(a, b, 0, 8, 2, 10, 4, 12, 6, 14);
+  const Lane8 ab_odd = __builtin_shufflevector(a, b, 1, 9, 3, 11, 5, 13, 7, 15);
+  const Lane8 cd_even = __builtin_shufflevector(c, d, 0, 8, 2, 10, 4, 12, 6, 14);
+  const Lane8 cd_odd = __builtin_shufflevector(c, d, 1, 9, 3, 11, 5, 13, 7, 15);
+  const Lane4 point[8] = {
+      __builtin_shufflevector(ab_even, cd_even, 0, 1, 8, 9),
+      __builtin_shufflevector(ab_odd, cd_odd, 0, 1, 8, 9),
+      __builtin_shufflevector(ab_even, cd_even, 2, 3, 10, 11),
+      __builtin_shufflevector(ab_odd, cd_odd, 2, 3, 10, 11),
+      __builtin_shufflevector(ab_even, cd_even, 4, 5, 12, 13),
+      __builtin_shufflevector(ab_odd, cd_odd, 4, 5, 12, 13),
+      __builtin_shufflevector(ab_even, cd_even, 6, 7, 14, 15),
+      __builtin_shufflevector(ab_odd, cd_odd, 6, 7, 14, 15)};
+  for (int l = 0; l < 8; ++l)
+    if (l < count) sums += point[l];
+}
+
 // The sums of two points, as {ax_a, ax_c, ay_a, ay_c, vx_a, vx_c, vy_a, vy_c}:
 // each lane the same products added in the same order as a node at a time.
-__attribute__((always_inline)) inline Lane8 gather_two(const Grid& g, HeldNodes& held,
+__attribute__((always_inline)) inline Lane8 gather_two(const Grid& g, RunBase& run,
                                                        const StencilWeights& a,
-                                                       const StencilWeights& c) {
+                                                       const StencilWeights& c,
+                                                       unsigned& walled, int bit) {
   Lane8 accel_a, velocity_a, accel_c, velocity_c;
-  gather_one(g, a, held, accel_a, velocity_a);
-  gather_one(g, c, held, accel_c, velocity_c);
+  gather_one(g, a, run, accel_a, velocity_a, walled, bit);
+  gather_one(g, c, run, accel_c, velocity_c, walled, bit + 1);
   const Lane8 sums = sum3_of_halves(accel_a, accel_c, velocity_a, velocity_c);
   return __builtin_shufflevector(sums, sums, 0, 2, 1, 3, 4, 6, 5, 7);
 }
@@ -139,7 +174,8 @@ __attribute__((always_inline)) inline Lane8 gather_two(const Grid& g, HeldNodes&
 __attribute__((always_inline)) inline void update_eight(const World& w, const PointArrays& a,
                                                         const StepInput& in, double keep,
                                                         const int q[8], int count,
-                                                        const Lane8 sums[4], PointSums& t,
+                                                        const Lane8 sums[4], unsigned walled,
+                                                        Lane4& terms, PointSums& t,
                                                         FastestByMaterial& fastest) {
   const bool run = stored_in_a_run(q, count);
   const Lane8 &ax = sums[0], &ay = sums[1], &vx = sums[2], &vy = sums[3];
@@ -149,25 +185,17 @@ __attribute__((always_inline)) inline void update_eight(const World& w, const Po
   const Lane8 kx = ux * keep, ky = uy * keep;  // damping of the gravity stage
   const Lane8 m = lanes_at<Lane8>(a.mass, q, run);
   const Lane8 v2 = kx * kx + ky * ky;
-  alignas(64) double gravity_terms[8], kinetic_terms[8], moving_terms[8], damped_terms[8];
-  put_lanes(gravity_terms, m * (in.gravity[0] * dx + in.gravity[1] * dy));
-  put_lanes(kinetic_terms, 0.5 * m * v2);
-  put_lanes(moving_terms, 0.5 * m * (vx * vx + vy * vy));
-  put_lanes(damped_terms, 0.5 * m * (ux * ux + uy * uy - v2));
+  add_in_point_order(terms, count, m * (in.gravity[0] * dx + in.gravity[1] * dy),
+                     0.5 * m * v2, 0.5 * m * (vx * vx + vy * vy),
+                     0.5 * m * (ux * ux + uy * uy - v2));
   store_lanes(a.x, q, count, run, lanes_at<Lane8>(a.x, q, run) + dx);
   store_lanes(a.y, q, count, run, lanes_at<Lane8>(a.y, q, run) + dy);
   store_lanes(a.vx, q, count, run, kx);
   store_lanes(a.vy, q, count, run, ky);
-  for (int l = 0; l < count; ++l) {
-    t.gravity_work += gravity_terms[l];
-    t.kinetic += kinetic_terms[l];
-    t.moving += moving_terms[l];
-    t.damped += damped_terms[l];
-    // Zero, and not added, for a point whose stencil no wall acts on.
-    const StencilWeights& st = w.weights[q[l]];
-    if (w.grid.reaches_walls(st.base_i, st.base_j))
-      t.walled += 0.5 * m[l] * in.dt * in.dt * walled_squared(w.grid, st);
-  }
+  // Zero, and not added, for a point whose stencil no wall acts on.
+  for (int l = 0; walled >> l != 0 && l < count; ++l)
+    if (walled >> l & 1)
+      t.walled += 0.5 * m[l] * in.dt * in.dt * walled_squared(w.grid, w.weights[q[l]]);
   fastest.add(a.material, q, run, v2);
 }
 
@@ -188,17 +216,24 @@ void grid_to_points(World& w, const StepInput& in) {
     // square root per material instead of one per point.
     FastestByMaterial fastest(kinds);
     const int end = w.band_start[band + 1];
-    HeldNodes held;
+    RunBase run;
+    Lane4 terms{};  // the sums of gravity work, kinetic, moving and damped energy
     for (int s = w.band_start[band]; s < end; s += 8) {
       const int count = std::min(8, end - s);
       int q[8];
       group_of_eight(&w.order[s], count, q);
       Lane8 pairs[4], sums[4];
+      unsigned walled = 0;  // bit l: a wall acts on point q[l]'s stencil
       for (int k = 0; k < 4; ++k)
-        pairs[k] = gather_two(w.grid, held, w.weights[q[2 * k]], w.weights[q[2 * k + 1]]);
+        pairs[k] = gather_two(w.grid, run, w.weights[q[2 * k]], w.weights[q[2 * k + 1]],
+                              walled, 2 * k);
       pairs_to_lanes(pairs, sums);  // {ax, ay, vx, vy}
-      update_eight(w, a, in, keep, q, count, sums, t, fastest);
+      update_eight(w, a, in, keep, q, count, sums, walled, terms, t, fastest);
     }
+    t.gravity_work = terms[0];
+    t.kinetic = terms[1];
+    t.moving = terms[2];
+    t.damped = terms[3];
     fastest.fold();
     for (int k = 0; k < kinds; ++k)
       if (fastest.largest[k] >= 0)
