@@ -14,7 +14,14 @@ namespace sim {
 
 // The eight slots of a group of count <= 8 points of `order` (a band's, in
 // its order), the last repeated into the lanes past count.
+// A whole group (nearly every one) is one copy: written as the loop alone,
+// it was compiled to eight loads through clamped indices, and each index
+// stored twice (issue 17, forty-fourth pass).
 inline void group_of_eight(const int* order, int count, int q[8]) {
+  if (count == 8) {
+    std::memcpy(q, order, 8 * sizeof(int));
+    return;
+  }
   for (int l = 0; l < 8; ++l) q[l] = order[std::min(l, count - 1)];
 }
 
@@ -23,9 +30,9 @@ inline void group_of_eight(const int* order, int count, int q[8]) {
 // arrays are then read and written as vectors instead of lane by lane.
 inline bool stored_in_a_run(const int q[8], int count) {
   if (count < 8) return false;
-  for (int l = 1; l < 8; ++l)
-    if (q[l] != q[0] + l) return false;
-  return true;
+  Int32x8 lanes;
+  std::memcpy(&lanes, q, sizeof lanes);
+  return every(lanes - q[0] == Int32x8{0, 1, 2, 3, 4, 5, 6, 7});
 }
 
 // The lanes of v (a Lane8 or Bytes8) as an array, for a loop that takes
