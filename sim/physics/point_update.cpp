@@ -106,8 +106,9 @@ __attribute__((noinline)) Lane8 velocity_gradients(const World& w, int p, int q,
   const Grid& g = w.grid;
   const StencilWeights &a = w.weights[p], &c = w.weights[q];
   Lane8 vx_wy{}, vx_dy{}, vy_wy{}, vy_dy{};  // column sums of v by Sy and by Sy'
+  const int base_a = g.node(a.base_i, a.base_j), base_c = g.node(c.base_i, c.base_j);
   for (int b = 0; b < 3; ++b) {
-    const int ra = g.node(a.base_i, a.base_j + b), rc = g.node(c.base_i, c.base_j + b);
+    const int ra = base_a + b * g.stride, rc = base_c + b * g.stride;
     const Lane8 wy = join4(splat4(a.wy[b]), splat4(c.wy[b])), dy = pair_halves<k>(d.dy[b]);
     const Lane8 vx = load4x2(g.vx.data(), ra, rc);
     const Lane8 vy = load4x2(g.vy.data(), ra, rc);
