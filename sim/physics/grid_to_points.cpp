@@ -68,16 +68,16 @@ struct RunBase {
 // went from 130.3 to 116.9 instructions a point-step on the 66,787-point
 // slope without them (bench/instructions.sh, forty-fourth pass).
 __attribute__((always_inline)) inline void gather_one(const Grid& g, const StencilWeights& st,
-                                                      RunBase& run, Lane8& accel,
+                                                      RunBase& base, Lane8& accel,
                                                       Lane8& velocity, unsigned& walled,
                                                       int bit) {
-  run.move_to(g, st);
-  walled |= unsigned(run.walled) << bit;
+  base.move_to(g, st);
+  walled |= unsigned(base.walled) << bit;
   const Lane8 wx = twice(x_weights(st));
   accel = velocity = Lane8{};
   for (int b = 0; b < 3; ++b) {
     const Lane8 S = wx * st.wy[b];
-    const int row = run.node + b * g.stride;
+    const int row = base.node + b * g.stride;
     accel = fused(S, load4x2_of(g.ax.data(), g.ay.data(), row), accel);
     velocity = fused(S, load4x2_of(g.vx.data(), g.vy.data(), row), velocity);
   }
@@ -152,13 +152,13 @@ __attribute__((always_inline)) inline void add_in_point_order(Lane4& sums, int c
 
 // The sums of two points, as {ax_a, ax_c, ay_a, ay_c, vx_a, vx_c, vy_a, vy_c}:
 // each lane the same products added in the same order as a node at a time.
-__attribute__((always_inline)) inline Lane8 gather_two(const Grid& g, RunBase& run,
+__attribute__((always_inline)) inline Lane8 gather_two(const Grid& g, RunBase& base,
                                                        const StencilWeights& a,
                                                        const StencilWeights& c,
                                                        unsigned& walled, int bit) {
   Lane8 accel_a, velocity_a, accel_c, velocity_c;
-  gather_one(g, a, run, accel_a, velocity_a, walled, bit);
-  gather_one(g, c, run, accel_c, velocity_c, walled, bit + 1);
+  gather_one(g, a, base, accel_a, velocity_a, walled, bit);
+  gather_one(g, c, base, accel_c, velocity_c, walled, bit + 1);
   const Lane8 sums = sum3_of_halves(accel_a, accel_c, velocity_a, velocity_c);
   return __builtin_shufflevector(sums, sums, 0, 2, 1, 3, 4, 6, 5, 7);
 }
@@ -216,7 +216,7 @@ void grid_to_points(World& w, const StepInput& in) {
     // square root per material instead of one per point.
     FastestByMaterial fastest(kinds);
     const int end = w.band_start[band + 1];
-    RunBase run;
+    RunBase base;
     Lane4 terms{};  // the sums of gravity work, kinetic, moving and damped energy
     for (int s = w.band_start[band]; s < end; s += 8) {
       const int count = std::min(8, end - s);
@@ -225,7 +225,7 @@ void grid_to_points(World& w, const StepInput& in) {
       Lane8 pairs[4], sums[4];
       unsigned walled = 0;  // bit l: a wall acts on point q[l]'s stencil
       for (int k = 0; k < 4; ++k)
-        pairs[k] = gather_two(w.grid, run, w.weights[q[2 * k]], w.weights[q[2 * k + 1]],
+        pairs[k] = gather_two(w.grid, base, w.weights[q[2 * k]], w.weights[q[2 * k + 1]],
                               walled, 2 * k);
       pairs_to_lanes(pairs, sums);  // {ax, ay, vx, vy}
       update_eight(w, a, in, keep, q, count, sums, walled, terms, t, fastest);

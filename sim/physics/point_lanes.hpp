@@ -13,10 +13,10 @@
 namespace sim {
 
 // The eight slots of a group of count <= 8 points of `order` (a band's, in
-// its order), the last repeated into the lanes past count.
-// A whole group (nearly every one) is one copy: written as the loop alone,
-// it was compiled to eight loads through clamped indices, and each index
-// stored twice (issue 17, forty-fourth pass).
+// its order), the last repeated into the lanes past count. A whole group
+// (nearly every one) is one copy: written as the loop alone, it was
+// compiled to eight loads through clamped indices, and each index stored
+// twice (issue 17, forty-fourth pass).
 inline void group_of_eight(const int* order, int count, int q[8]) {
   if (count == 8) {
     std::memcpy(q, order, 8 * sizeof(int));
