@@ -86,7 +86,7 @@ struct Team {
 int free_cores();
 
 // The cores other programs take, from the cores' worth of CPU time they
-// used on average (kBusyShare below): 0.3 is none, 0.67 one.
+// used on average (kBusyShare above): 0.3 is none, 0.67 one.
 int busy_cores(double others);
 
 // Online cores less the cores other programs kept busy on average since
