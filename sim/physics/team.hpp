@@ -67,6 +67,7 @@ constexpr double kBusyShare = 0.35;
 struct CpuUsage {
   double all = -1, own = 0;  // seconds; all < 0: none taken yet
   std::chrono::steady_clock::time_point at{};
+  int cpus = 0;  // the usable CPUs `all` sums over
 };
 
 struct Team {
@@ -78,19 +79,22 @@ struct Team {
   CpuUsage usage;  // at the last count
 };
 
-// Online cores less the runnable threads of other processes (the
-// running-task count of /proc/loadavg less this process's threads in state
-// R) and less the cores held (CoreHold), at least 1 and at most
-// omp_get_max_threads(). Where /proc cannot be read, omp_get_max_threads()
-// less the cores held.
+// The CPUs this process may run on (its affinity mask: taskset, a batch
+// system's cpuset) less the runnable threads of other processes there and
+// less the cores held (CoreHold), at least 1 and at most
+// omp_get_max_threads(). Where the mask holds every online CPU, the
+// runnable threads are the running-task count of /proc/loadavg less this
+// process's threads in state R; where it leaves some out, the other
+// processes' threads in state R that last ran on one of its CPUs. Where
+// /proc cannot be read, the usable CPUs less the cores held.
 int free_cores();
 
 // The cores other programs take, from the cores' worth of CPU time they
 // used on average (kBusyShare above): 0.3 is none, 0.67 one.
 int busy_cores(double others);
 
-// Online cores less the cores other programs kept busy on average since
-// `since` (the CPU time of every core in /proc/stat less this process's),
+// The usable CPUs less the cores other programs kept busy on average since
+// `since` (the CPU time of those CPUs in /proc/stat less this process's),
 // less the cores held, at least 1 and at most omp_get_max_threads(); -1
 // where /proc/stat cannot be read or less than kLeastAverage has passed.
 // `since` becomes now.

@@ -3,6 +3,7 @@
 // this one holds a core.
 #include <gtest/gtest.h>
 #include <omp.h>
+#include <sched.h>
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -14,14 +15,34 @@
 
 namespace {
 
-// A process that spins until stopped; -1 where it cannot be forked.
-pid_t start_spinning() {
+// A process that spins until stopped, on CPU `cpu` alone where one is
+// named; -1 where it cannot be forked.
+pid_t start_spinning(int cpu = -1) {
   const pid_t busy = fork();
   if (busy == 0) {
+    if (cpu >= 0) {
+      cpu_set_t only;
+      CPU_ZERO(&only);
+      CPU_SET(cpu, &only);
+      sched_setaffinity(0, sizeof only, &only);
+    }
     volatile unsigned long spin = 0;
     for (;;) ++spin;
   }
   return busy;
+}
+
+// Runs `work` with the calling thread's affinity mask set to `cpus`, then
+// gives the thread its mask back.
+template <typename Work>
+void on_cpus(std::initializer_list<int> cpus, Work work) {
+  cpu_set_t before, only;
+  ASSERT_EQ(sched_getaffinity(0, sizeof before, &before), 0);
+  CPU_ZERO(&only);
+  for (const int c : cpus) CPU_SET(c, &only);
+  ASSERT_EQ(sched_setaffinity(0, sizeof only, &only), 0);
+  work();
+  sched_setaffinity(0, sizeof before, &before);
 }
 
 void stop(pid_t busy) {
@@ -74,6 +95,46 @@ TEST(Team, ABusyProcessTakesACoreOnAverage) {
   EXPECT_GE(free, 1);
   EXPECT_LT(free, cores) << "a process spinning for 300 ms left all " << cores
                          << " cores counted free";
+}
+
+// `taskset -c 0` (or a batch system's cpuset of one CPU) leaves one core,
+// however many the machine has online and however many threads are asked:
+// two threads there took turns on it at 0.67 of one's rate.
+TEST(Team, TheAffinityMaskBoundsTheTeam) {
+  omp_set_num_threads(2);
+  on_cpus({sched_getcpu()}, [] {
+    EXPECT_EQ(sim::free_cores(), 1);
+    sim::CpuUsage since;
+    EXPECT_EQ(sim::averaged_free_cores(since), -1);
+    std::this_thread::sleep_for(std::chrono::milliseconds(150));
+    EXPECT_EQ(sim::averaged_free_cores(since), 1);
+    sim::Team team;
+    EXPECT_EQ(sim::team_size(team), 1);
+  });
+}
+
+// Within a mask, only the processes on its CPUs take a core: a busy loop on
+// a CPU outside it takes none. Needs three CPUs (a mask of two and one
+// outside it).
+TEST(Team, OnlyBusyCpusInTheMaskCount) {
+  if (sysconf(_SC_NPROCESSORS_ONLN) < 3) GTEST_SKIP() << "fewer than three CPUs";
+  omp_set_num_threads(2);
+  on_cpus({0, 1}, [] {
+    for (const int cpu : {1, 2}) {
+      const pid_t busy = start_spinning(cpu);
+      ASSERT_GE(busy, 0);
+      std::this_thread::sleep_for(std::chrono::milliseconds(50));
+      sim::CpuUsage since;
+      sim::averaged_free_cores(since);
+      const int instant = sim::free_cores();
+      std::this_thread::sleep_for(std::chrono::milliseconds(300));
+      const int averaged = sim::averaged_free_cores(since);
+      stop(busy);
+      const int expected = cpu == 1 ? 1 : 2;
+      EXPECT_EQ(instant, expected) << "a busy loop on CPU " << cpu << ", the mask {0, 1}";
+      EXPECT_EQ(averaged, expected) << "a busy loop on CPU " << cpu << ", the mask {0, 1}";
+    }
+  });
 }
 
 // Other programs' average use, in cores, to the cores they take: a core
