@@ -25,19 +25,28 @@ namespace {
 
 // The signal that asked the run to stop (SIGINT or SIGTERM); 0: none.
 volatile std::sig_atomic_t interrupt_requested = 0;
+// Whether the stop writes a checkpoint (`run`, `resume`) or not (`gallery`).
+volatile std::sig_atomic_t stop_writes_checkpoint = 1;
 
 extern "C" void on_interrupt(int signal) {
   interrupt_requested = signal;
-  // Only write(2) is safe here: no formatting, so one fixed text per signal.
+  // Only write(2) is safe here: no formatting, so one fixed text per case.
   static const char ctrl_c[] =
       "\nCtrl-C: stopping after this step and writing a checkpoint (Ctrl-C again quits at "
       "once)\n";
   static const char term[] =
       "\nSIGTERM: stopping after this step and writing a checkpoint (a second SIGTERM quits "
       "at once)\n";
+  static const char ctrl_c_only[] =
+      "\nCtrl-C: stopping after this step or figure (Ctrl-C again quits at once)\n";
+  static const char term_only[] =
+      "\nSIGTERM: stopping after this step or figure (a second SIGTERM quits at once)\n";
   const bool is_term = signal == SIGTERM;
-  [[maybe_unused]] const ssize_t n =
-      ::write(2, is_term ? term : ctrl_c, is_term ? sizeof term - 1 : sizeof ctrl_c - 1);
+  const char* text = stop_writes_checkpoint ? (is_term ? term : ctrl_c)
+                                            : (is_term ? term_only : ctrl_c_only);
+  const std::size_t size = stop_writes_checkpoint ? (is_term ? sizeof term : sizeof ctrl_c)
+                                                  : (is_term ? sizeof term_only : sizeof ctrl_c_only);
+  [[maybe_unused]] const ssize_t n = ::write(2, text, size - 1);
 }
 
 double seconds_since(std::chrono::steady_clock::time_point t) {
@@ -66,8 +75,9 @@ std::string stage_done_line(const sim::StageSpec& stage, const sim::StageResult&
 
 // SIGTERM is what `timeout`, `kill` and batch schedulers send before they
 // give up on a job: it must leave a checkpoint just as Ctrl-C does.
-void catch_interrupt() {
+void catch_interrupt(bool writes_checkpoint) {
   interrupt_requested = 0;
+  stop_writes_checkpoint = writes_checkpoint ? 1 : 0;
   struct sigaction sa {};
   sa.sa_handler = on_interrupt;
   sa.sa_flags = SA_RESETHAND;
@@ -85,6 +95,8 @@ std::string Interrupted::status() const {
   return std::string("interrupted") + (signal == SIGTERM ? " by SIGTERM" : "") + " at t = " +
          std::to_string(time) + " s (checkpoint.lsck)";
 }
+
+int interrupt_signal() { return interrupt_requested; }
 
 int Interrupted::exit_status() const {
   return signal == SIGTERM ? kExitTerminated : kExitInterrupted;

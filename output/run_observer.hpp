@@ -35,8 +35,11 @@ struct Interrupted {
 
 // Ctrl-C (SIGINT) or SIGTERM asks the run to stop at the end of the current
 // step; a second one ends the process at once (the handler resets itself).
-void catch_interrupt();
+// The message printed says a checkpoint is written where `writes_checkpoint`.
+void catch_interrupt(bool writes_checkpoint = true);
 void release_interrupt();
+// The signal caught since catch_interrupt() (SIGINT or SIGTERM); 0: none.
+int interrupt_signal();
 
 // Where a run comes from and what it keeps; the checkpoint stores the first
 // two so a resumed run needs nothing else.

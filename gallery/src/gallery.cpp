@@ -6,6 +6,7 @@
 #include <omp.h>
 #include <time.h>
 
+
 #include <chrono>
 #include <cmath>
 #include <cstdint>
@@ -23,6 +24,7 @@
 #include "gallery/src/gallery_lanes.hpp"
 #include "output/exit_status.hpp"
 #include "output/output_dir.hpp"
+#include "output/run_observer.hpp"
 #include "output/frames.hpp"
 #include "gallery/src/gallery_runs.hpp"
 #include "gallery/src/gallery_studies.hpp"
@@ -155,7 +157,17 @@ void timed(const std::string& name, const std::function<void()>& make) {
   const auto start = Clock::now();
   make();
   std::cout << name << ": " << fmt(seconds_since(start)) << " s painting" << std::endl;
+  gallery::stop_if_interrupted();
 }
+
+// Ctrl-C and SIGTERM stop the gallery between two steps or after a figure
+// (gallery::GalleryInterrupted) for as long as this lives.
+struct InterruptCaught {
+  InterruptCaught() { catch_interrupt(false); }
+  ~InterruptCaught() { release_interrupt(); }
+  InterruptCaught(const InterruptCaught&) = delete;
+  InterruptCaught& operator=(const InterruptCaught&) = delete;
+};
 
 // Figures 5, 6, 9 and 10 and the series figure: the phi = 20 scene at 8370
 // points, its gravity stage and its slide.
@@ -264,6 +276,18 @@ void friction_figures(Gallery& g, const gallery::Study& study, const std::string
   });
 }
 
+// After Ctrl-C or SIGTERM: the figures painted before it stay (each was
+// written whole, under a temporary name first); the frames of the runs and
+// animations under way, in OUT/.work, go.
+int stopped(const fs::path& out, int signal) {
+  std::error_code ignored;
+  fs::remove_all(out / ".work", ignored);
+  std::cerr << "gallery: stopped by " << gallery::GalleryInterrupted{signal}.by()
+            << "; the figures made before it (listed above) are in " << out.string()
+            << "; run the gallery again for the rest\n";
+  return Interrupted{0, signal}.exit_status();
+}
+
 }  // namespace
 
 int gallery_command(const GalleryOptions& o) {
@@ -272,6 +296,7 @@ int gallery_command(const GalleryOptions& o) {
   if (!inputs_ready(o, scenarios, studies)) return kExitBadInput;
   const fs::path out(o.out);
   const auto total = Clock::now();
+  const InterruptCaught interrupt;
   try {
     fs::create_directories(out);
     Gallery g(scenarios, out, o.quick);
@@ -281,6 +306,7 @@ int gallery_command(const GalleryOptions& o) {
     const std::string lanes = gallery::run_in_lanes(g, every_run(scenarios, studies));
     std::cout << "runs: " << fmt(seconds_since(runs)) << " s (" << lanes << "); "
               << busy_line(processor_seconds() - processor) << std::endl;
+    gallery::stop_if_interrupted();
     stage_figures(g, o.quick, q);
     resolution_figure(g, studies.resolutions, q);
     friction_figures(g, studies.friction_angles, q, out);
@@ -296,10 +322,14 @@ int gallery_command(const GalleryOptions& o) {
     for (const std::string& f : failures)
       std::cerr << "error: run failed (its panels show its last frame): " << f << '\n';
     if (!failures.empty()) return kExitFailed;
+  } catch (const gallery::GalleryInterrupted& stop) {
+    return stopped(out, stop.signal);
   } catch (const sim::ScenarioError& e) {
     std::cerr << "error: " << e.what() << '\n';
     return kExitBadInput;
   } catch (const std::exception& e) {
+    // ffmpeg, in the terminal's process group, dies of the same Ctrl-C.
+    if (const int signal = interrupt_signal()) return stopped(out, signal);
     std::cerr << "error: " << e.what() << '\n';
     return kExitFailed;
   }

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <atomic>
+#include <csignal>
 #include <chrono>
 #include <cmath>
 #include <iostream>
@@ -15,6 +16,7 @@
 
 #include "output/frames.hpp"
 #include "gallery/src/gallery_parts.hpp"
+#include "output/run_observer.hpp"
 #include "output/series.hpp"
 #include "sim/run/simulation.hpp"
 
@@ -37,6 +39,19 @@ const std::vector<double> kSlideTimes = {3, 4, 8, 12, 16};
 struct RunsStopped : std::runtime_error {
   RunsStopped() : std::runtime_error("stopped: a run on the other lane failed") {}
 };
+
+// Thrown between two steps of a run, and after a figure, once Ctrl-C or
+// SIGTERM came (output/run_observer.hpp's catch_interrupt): the gallery
+// stops there, removes its work folder and exits 130 or 143. Not a
+// std::exception, so that no run takes it for a failure of its own.
+struct GalleryInterrupted {
+  int signal = 0;
+  const char* by() const { return signal == SIGTERM ? "SIGTERM" : "Ctrl-C"; }
+};
+
+inline void stop_if_interrupted() {
+  if (const int signal = interrupt_signal()) throw GalleryInterrupted{signal};
+}
 
 class GalleryObserver : public sim::Observer {
  public:
@@ -86,6 +101,7 @@ class GalleryObserver : public sim::Observer {
   }
 
   void progress(const sim::Simulation& sim, const sim::StageSpec& stage, long steps) override {
+    stop_if_interrupted();
     if (stop_.load(std::memory_order_relaxed)) throw RunsStopped();
     if (series_) series_->progress(sim, stage);
     if (std::chrono::steady_clock::now() - last_ < std::chrono::seconds(10)) return;

@@ -110,6 +110,9 @@ class Gallery {
       log_line("  " + s.name + ": stopped at t = " + fmt(simulation.time(), 2) +
                " s, as a run on the other lane failed");
       throw;
+    } catch (const GalleryInterrupted& stop) {
+      log_line("  " + s.name + ": stopped at t = " + fmt(simulation.time(), 2) + " s by " + stop.by());
+      throw;
     } catch (const std::exception& e) {
       // A failed run (e.g. a point thrown out of the grid) still shows its
       // last frame; the figure's caption says so.
