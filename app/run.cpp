@@ -17,6 +17,7 @@
 #include "output/output_dir.hpp"
 #include "app/preflight.hpp"
 #include "output/run_observer.hpp"
+#include "sim/physics/team.hpp"
 #include "output/state_cache.hpp"
 #include "sim/io/binary_io.hpp"
 #include "sim/run/simulation.hpp"
@@ -40,6 +41,15 @@ struct RunSetup {
   const Checkpoint* checkpoint = nullptr;  // resume from it
   bool overwrite = false, allow_long = false;
 };
+
+// Where the threads asked for outnumber the CPUs the process may run on,
+// the step uses no more threads than those (sim/physics/team.hpp): say so.
+std::string cpus_note(int threads) {
+  const int cpus = sim::usable_cpus();
+  if (cpus < 1 || threads <= cpus) return "";
+  return " (at most " + std::to_string(cpus) + " at once: the " + counted(cpus, "CPU") +
+         " of this process's affinity mask)";
+}
 
 PreflightRequest preflight_request(const RunSetup& r, int threads) {
   PreflightRequest q;
@@ -103,7 +113,8 @@ int execute(RunSetup& r) {
     fs::create_directories(r.out);
     std::cerr << "landslide " << LANDSLIDE_VERSION << ": " << r.scenario.name << ", "
               << simulation->world().points.size() << " points, h = " << r.scenario.cell_size
-              << " m, " << counted(threads, "thread") << " -> " << r.out.string() << '\n';
+              << " m, " << counted(threads, "thread") << cpus_note(threads) << " -> "
+              << r.out.string() << '\n';
     if (r.checkpoint)
       std::cerr << "resuming at t = " << simulation->time() << " s from "
                 << checkpoint_path(r.out).string() << '\n';

@@ -34,7 +34,7 @@ struct Cpus {
   bool every_online = true;  // the mask leaves out no online CPU
 };
 
-Cpus usable_cpus() {
+Cpus usable_cpu_set() {
   Cpus c;
   CPU_ZERO(&c.set);
   if (omp_get_proc_bind() != omp_proc_bind_false && omp_get_num_places() > 0) {
@@ -173,12 +173,14 @@ int cores_left(const Cpus& cpus, int others) {
 
 }  // namespace
 
+int usable_cpus() { return usable_cpu_set().count; }
+
 int busy_cores(double others) {
   return std::max(0, static_cast<int>(std::floor(others + 1.0 - kBusyShare)));
 }
 
 int averaged_free_cores(CpuUsage& since) {
-  const Cpus cpus = usable_cpus();
+  const Cpus cpus = usable_cpu_set();
   const CpuUsage now{cpu_seconds_on(cpus), own_cpu_seconds(), std::chrono::steady_clock::now(),
                      cpus.count};
   const CpuUsage before = since;
@@ -192,7 +194,7 @@ int averaged_free_cores(CpuUsage& since) {
 }
 
 int free_cores() {
-  const Cpus cpus = usable_cpus();
+  const Cpus cpus = usable_cpu_set();
   if (!cpus.every_online) return cores_left(cpus, others_runnable_on(cpus));
   const int all = runnable_tasks(), own = own_runnable_threads();
   if (all < 0 || own < 0) return cores_left(cpus, -1);

@@ -89,6 +89,11 @@ struct Team {
 // /proc cannot be read, the usable CPUs less the cores held.
 int free_cores();
 
+// The CPUs this process may run on: its affinity mask's (taskset, a batch
+// system's cpuset), or every OpenMP place's where OpenMP binds its threads.
+// The team never has more threads than these.
+int usable_cpus();
+
 // The cores other programs take, from the cores' worth of CPU time they
 // used on average (kBusyShare above): 0.3 is none, 0.67 one.
 int busy_cores(double others);

@@ -1,8 +1,9 @@
 // What `landslide` says, read from the real binary in a child process: each
 // message names the value and what is allowed, counts read as words do ("1
-// thread"), and a stage's closing line gives the kinetic energy its rest
-// test compared.
+// thread"), a stage's closing line gives the kinetic energy its rest test
+// compared, and threads beyond the CPUs the process may use are named.
 #include <gtest/gtest.h>
+#include <sched.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -100,6 +101,24 @@ TEST_F(CliMessages, CountsInTheSingular) {
   EXPECT_NE(run.output.find("encoded 1 video in "), std::string::npos) << run.output;
   EXPECT_EQ(run.output.find(" 1 threads"), std::string::npos) << run.output;
   EXPECT_EQ(run.output.find(" 1 videos"), std::string::npos) << run.output;
+}
+
+// More threads asked than the CPUs of the affinity mask (taskset -c 0 here,
+// which the child inherits): the run line says how many run at once.
+TEST_F(CliMessages, ThreadsBeyondTheAffinityMaskAreNamed) {
+  if (!render::ffmpeg_available(nullptr)) GTEST_SKIP() << "the scene paints; no ffmpeg";
+  cpu_set_t before, one;
+  ASSERT_EQ(sched_getaffinity(0, sizeof before, &before), 0);
+  CPU_ZERO(&one);
+  CPU_SET(sched_getcpu(), &one);
+  ASSERT_EQ(sched_setaffinity(0, sizeof one, &one), 0);
+  const Result run = landslide("run one.json --out out --threads 2", root_);
+  sched_setaffinity(0, sizeof before, &before);
+  ASSERT_EQ(run.status, 0) << run.output;
+  EXPECT_NE(run.output.find(", 2 threads (at most 1 at once: the 1 CPU of this process's "
+                            "affinity mask) -> "),
+            std::string::npos)
+      << run.output;
 }
 
 // The closing line of a stage gives the kinetic energy its rest test used
