@@ -80,13 +80,20 @@ T circle_radius(const StressOf<T>& s) {
 // estimate of 1 / sqrt (relative error below 2^-14) raised by 2^-12: the
 // vector square root's latency held up the stress phase, and most groups of
 // a slope at rest are inside the surface. Only where the build has an
-// estimate; without one, return_in_place does not call this.
+// estimate; without one, return_in_place does not call this. q * rsqrt(q)
+// is NaN at q = 0 (0 * inf) and at q = inf (inf * 0, a radius past 2^512):
+// the radius is 0 at the one and infinite at the other. Without the second,
+// an AMD EPYC with AVX-512 (Zen 5) gave NaN there, and
+// MohrCoulombReturnLanes.RadiusEstimateBoundsTheRadius failed (issue 17,
+// forty-fifth pass); a NaN radius failed the test of f as an infinite one
+// does, so results were the same either way.
 #if defined(__AVX512F__)
 constexpr bool kRadiusEstimate = true;
 inline Lane8 radius_above(const StressOf<Lane8>& s) {
   const Lane8 q = squared_radius(s);
-  const Lane8 estimate = q * _mm512_rsqrt14_pd(q) * (1.0 + 0x1p-12);
-  return q > 0 ? estimate : Lane8{};  // q * rsqrt(q) is NaN at q = 0
+  const Lane8 estimate =
+      q < HUGE_VAL ? q * _mm512_rsqrt14_pd(q) * (1.0 + 0x1p-12) : Lane8{} + HUGE_VAL;
+  return q > 0 ? estimate : Lane8{};
 }
 #elif defined(__AVX__)
 // With AVX alone the estimate is single precision: q rounded to a float
