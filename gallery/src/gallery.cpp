@@ -6,7 +6,6 @@
 #include <omp.h>
 #include <time.h>
 
-
 #include <chrono>
 #include <cmath>
 #include <cstdint>

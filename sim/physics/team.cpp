@@ -77,7 +77,7 @@ bool runnable_thread(const std::string& path, int& cpu) {
   std::fclose(f);
   if (!read) return false;
   // The state follows the command name, which is in parentheses; the CPU is
-  // the 39th field, the 37th after the state (proc(5)).
+  // the 39th field, 36 fields after the state (proc(5)).
   const char* close = std::strrchr(line, ')');
   if (!close || close[1] == '\0' || close[2] == '\0') return false;
   const char* field = close + 2;
