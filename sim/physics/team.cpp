@@ -115,7 +115,10 @@ int own_runnable_threads() { return runnable_threads("self", nullptr); }
 // Other processes' threads in state R on the CPUs of `cpus`: every process's
 // stat file read, for a mask that leaves out some of the machine, whose
 // /proc/loadavg counts tasks this process cannot be held up by. -1 where
-// /proc cannot be read.
+// /proc cannot be read. It reads a file a thread: 2.1 ms a count under
+// `taskset -c 0` on this project's 2-core VM (88 threads), against 36 us for
+// the whole machine's count, so only a team's first count and its
+// confirmation take it (team_size); the counts after them are averaged.
 int others_runnable_on(const Cpus& cpus) {
   DIR* dir = opendir("/proc");
   if (!dir) return -1;
