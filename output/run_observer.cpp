@@ -6,6 +6,7 @@
 #include <cmath>
 #include <csignal>
 #include <cstdio>
+#include <cstring>
 #include <iostream>
 #include <sstream>
 
@@ -30,23 +31,17 @@ volatile std::sig_atomic_t stop_writes_checkpoint = 1;
 
 extern "C" void on_interrupt(int signal) {
   interrupt_requested = signal;
-  // Only write(2) is safe here: no formatting, so one fixed text per case.
-  static const char ctrl_c[] =
-      "\nCtrl-C: stopping after this step and writing a checkpoint (Ctrl-C again quits at "
-      "once)\n";
-  static const char term[] =
-      "\nSIGTERM: stopping after this step and writing a checkpoint (a second SIGTERM quits "
-      "at once)\n";
-  static const char ctrl_c_only[] =
-      "\nCtrl-C: stopping after this step or figure (Ctrl-C again quits at once)\n";
-  static const char term_only[] =
-      "\nSIGTERM: stopping after this step or figure (a second SIGTERM quits at once)\n";
-  const bool is_term = signal == SIGTERM;
-  const char* text = stop_writes_checkpoint ? (is_term ? term : ctrl_c)
-                                            : (is_term ? term_only : ctrl_c_only);
-  const std::size_t size = stop_writes_checkpoint ? (is_term ? sizeof term : sizeof ctrl_c)
-                                                  : (is_term ? sizeof term_only : sizeof ctrl_c_only);
-  [[maybe_unused]] const ssize_t n = ::write(2, text, size - 1);
+  // Only write(2) and strlen are safe here (async-signal-safe, POSIX): no
+  // formatting, so one fixed text per case, [writes a checkpoint][SIGTERM].
+  static const char* const texts[2][2] = {
+      {"\nCtrl-C: stopping after this step or figure (Ctrl-C again quits at once)\n",
+       "\nSIGTERM: stopping after this step or figure (a second SIGTERM quits at once)\n"},
+      {"\nCtrl-C: stopping after this step and writing a checkpoint (Ctrl-C again quits at "
+       "once)\n",
+       "\nSIGTERM: stopping after this step and writing a checkpoint (a second SIGTERM quits "
+       "at once)\n"}};
+  const char* text = texts[stop_writes_checkpoint ? 1 : 0][signal == SIGTERM ? 1 : 0];
+  [[maybe_unused]] const ssize_t n = ::write(2, text, std::strlen(text));
 }
 
 double seconds_since(std::chrono::steady_clock::time_point t) {
